@@ -1,0 +1,108 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/loads/ground_motion.h>
+#include <archdam/output/field_writer.h>
+#include <archdam/output/histories.h>
+#include <archdam/output/monitors.h>
+#include <archdam/output/summary.h>
+#include <archdam/parameters/parameters.h>
+#include <archdam/physics/solid/stress.h>
+#include <archdam/time/newmark.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/shared_tria.h>
+
+#include <memory>
+
+namespace archdam::analysis
+{
+  /**
+   * One case from start to end (architecture.md §1): the model is built once
+   * (mesh, DOFs, M, K, loads), then the stages run in order, static (gravity)
+   * and dynamic (ground motion from the static state), each writing its
+   * results; summary.json is written at the end.
+   */
+  class Simulation
+  {
+  public:
+    Simulation(const Parameters &p, MPI_Comm comm, std::ostream &screen);
+
+    /// Build the model and run every stage the parameters ask for.
+    void
+    run();
+
+    // What a run leaves behind, for tests and benchmarks.
+    const fe::FESpace &
+    space() const
+    {
+      return *fe_space;
+    }
+    const SparseMatrix &
+    mass() const
+    {
+      return mass_matrix;
+    }
+    const SparseMatrix &
+    stiffness() const
+    {
+      return stiffness_matrix;
+    }
+    const time::NewmarkState &
+    state() const
+    {
+      return current;
+    }
+    const Vector &
+    static_displacement() const
+    {
+      return u_static;
+    }
+    const output::HistoryWriter &
+    histories() const
+    {
+      return *history;
+    }
+    const output::Monitors &
+    monitors() const
+    {
+      return *monitor;
+    }
+
+  private:
+    void
+    setup_model();
+    void
+    run_static_stage();
+    void
+    run_dynamic_stage();
+    void
+    write_summary();
+    /// Fields of the current state, and the stress peak over the dam.
+    void
+    write_fields();
+
+    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation).
+    void
+    external_load(double t, Vector &load) const;
+
+    const Parameters                        &p;
+    MPI_Comm                                 comm;
+    dealii::ConditionalOStream               screen;
+    dealii::TimerOutput                      timer;
+    dealii::parallel::shared::Triangulation<dim> triangulation;
+    std::unique_ptr<fe::FESpace>             fe_space;
+    std::unique_ptr<loads::GroundMotion>     ground_motion;
+    SparseMatrix                             mass_matrix, stiffness_matrix;
+    Vector                                   static_load, u_static;
+    std::array<Vector, dim>                  influence_load;
+    time::NewmarkState                       current;
+    std::unique_ptr<output::Monitors>        monitor;
+    std::unique_ptr<output::HistoryWriter>   history;
+    std::unique_ptr<output::FieldWriter>     fields;
+    physics::solid::PeakStress               peak_stress{-1e300, {}};
+    double                                   peak_stress_time = 0.;
+    output::Summary                          summary;
+  };
+} // namespace archdam::analysis

@@ -1,0 +1,71 @@
+#pragma once
+
+#include <archdam/base/types.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_values_extractors.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/q_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <set>
+
+namespace archdam::fe
+{
+  /// The `Finite element` subsection.
+  struct FiniteElementParameters
+  {
+    unsigned int degree = 2;
+
+    void
+    add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * The discrete space of the whole model (style.md, step-46): one DoFHandler
+   * over an hp::FECollection whose element 0 carries the displacement u
+   * (dim components, FE_Q) in solid cells and element 1 the hydrodynamic
+   * pressure p (one component) in water cells; the other field is FE_Nothing.
+   * Component layout is always (u_x, u_y, u_z, p).
+   */
+  class FESpace
+  {
+  public:
+    static constexpr unsigned int solid_index    = 0;
+    static constexpr unsigned int fluid_index    = 1;
+    static constexpr unsigned int pressure_comp  = dim;
+    static constexpr unsigned int n_components   = dim + 1;
+
+    FESpace(const dealii::parallel::shared::Triangulation<dim> &tria,
+            const FiniteElementParameters                    &p);
+
+    /// Distribute DOFs and fix the displacement on the given boundary ids
+    /// (homogeneous constraints: the unknowns of a step are increments).
+    void
+    setup(const std::set<dealii::types::boundary_id> &fixed_boundaries);
+
+    void
+    reinit(SparseMatrix &matrix) const;
+    void
+    reinit(Vector &vector) const;
+    /// A vector with ghost entries, for output and evaluation.
+    void
+    reinit_ghosted(Vector &vector) const;
+
+    MPI_Comm                                    comm;
+    unsigned int                                degree;
+    dealii::hp::FECollection<dim>               fe_collection;
+    dealii::hp::QCollection<dim>                q_collection;
+    dealii::hp::QCollection<dim - 1>            face_q_collection;
+    dealii::DoFHandler<dim>                     dof_handler;
+    dealii::IndexSet                            locally_owned;
+    dealii::IndexSet                            locally_relevant;
+    dealii::AffineConstraints<double>           constraints;
+    const dealii::FEValuesExtractors::Vector    displacement{0};
+    const dealii::FEValuesExtractors::Scalar    pressure{pressure_comp};
+
+  };
+} // namespace archdam::fe

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace archdam::loads
+{
+  /// The `Static loads` subsection (numerics.md §6, step 1).
+  struct StaticLoadParameters
+  {
+    bool   gravity         = true;
+    double g               = 9.81;
+    bool   gravity_on_rock = false;
+
+    void
+    add_parameters(dealii::ParameterHandler &prm);
+  };
+} // namespace archdam::loads

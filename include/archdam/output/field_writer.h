@@ -1,0 +1,55 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/physics/solid/materials.h>
+#include <archdam/time/newmark.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace archdam::output
+{
+  /// The `Output` subsection.
+  struct OutputParameters
+  {
+    std::string  directory       = "results";
+    unsigned int field_interval  = 10;
+    std::string  field_formats   = "vtu, hdf5";
+    bool         progress        = true;
+    bool         timer_summary   = true;
+
+    void
+    add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * Fields for ParaView: displacement, velocity, acceleration (with the
+   * pressure component p and its rates), stress tensor, major and minor
+   * principal stress, material id and MPI subdomain; as VTU pieces with a PVTU
+   * per output and a PVD time series (`solution.pvd`), and as HDF5 with an
+   * XDMF index (`solution.xdmf`).
+   */
+  class FieldWriter
+  {
+  public:
+    FieldWriter(const OutputParameters &p, const fe::FESpace &space,
+                const physics::solid::MaterialParameters &materials);
+
+    /// Write the fields of @p s (its time labels the output).
+    void
+    write(const time::NewmarkState &s);
+
+  private:
+    const OutputParameters                   &p;
+    const fe::FESpace                        &space;
+    const physics::solid::MaterialParameters &materials;
+    bool                                      vtu, hdf5;
+    std::vector<std::pair<double, std::string>> pvd_records;
+    std::vector<dealii::XDMFEntry>            xdmf_entries;
+    unsigned int                              n_written = 0;
+  };
+} // namespace archdam::output

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace archdam::output
+{
+  /**
+   * Time histories of the monitored quantities. Rank 0 appends one CSV row per
+   * step to `histories.csv` and flushes it, so a killed run leaves a valid
+   * prefix; at the end the whole table goes to `histories.h5` as the dataset
+   * "histories" (rows = steps) with the column names as the attribute
+   * "columns". Every row is also kept in memory for peaks and tests.
+   */
+  class HistoryWriter
+  {
+  public:
+    HistoryWriter(const std::string &directory, std::vector<std::string> columns,
+                  MPI_Comm comm);
+
+    void
+    append(const std::vector<double> &row);
+
+    /// Write the HDF5 copy.
+    void
+    finish();
+
+    const std::vector<std::string> &
+    columns() const
+    {
+      return names;
+    }
+    const std::vector<std::vector<double>> &
+    rows() const
+    {
+      return table;
+    }
+
+  private:
+    std::string                      directory;
+    std::vector<std::string>         names;
+    bool                             writer;
+    std::ofstream                    csv;
+    std::vector<std::vector<double>> table;
+  };
+} // namespace archdam::output

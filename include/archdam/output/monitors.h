@@ -1,0 +1,85 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/physics/solid/materials.h>
+#include <archdam/time/newmark.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace archdam::output
+{
+  /// The `Monitors` subsection: named points and what is recorded there.
+  struct MonitorParameters
+  {
+    std::string points;
+    std::string quantities = "displacement, principal stress";
+
+    void
+    add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  struct MonitorPoint
+  {
+    std::string        name;
+    dealii::Point<dim> location;
+  };
+
+  /// Parse "name: x, y, z; name: x, y, z" (InputError naming the bad item).
+  std::vector<MonitorPoint>
+  parse_monitor_points(const std::string &text);
+
+  /**
+   * Evaluates the solution at the monitor points. The FE weights of each
+   * point (shape values and gradients at its reference coordinates) are
+   * computed once; an evaluation gathers the few DOF values involved from
+   * their owners (one small all-reduce), so every rank gets the same row.
+   */
+  class Monitors
+  {
+  public:
+    Monitors(const MonitorParameters &p, const fe::FESpace &space,
+             const physics::solid::MaterialParameters &materials);
+
+    /// Column headers with units, in the order of evaluate().
+    const std::vector<std::string> &
+    column_names() const
+    {
+      return names;
+    }
+
+    std::vector<double>
+    evaluate(const time::NewmarkState &state) const;
+
+    /// Displacement vector at point @p k for the nodal vector @p u.
+    dealii::Tensor<1, dim>
+    displacement(unsigned int k, const Vector &u) const;
+
+    const std::vector<MonitorPoint> &
+    monitor_points() const
+    {
+      return points;
+    }
+
+  private:
+    struct Weights
+    {
+      std::vector<dealii::types::global_dof_index> dofs;
+      std::vector<dealii::Tensor<1, dim>>          value;    // per dof
+      std::vector<dealii::Tensor<2, dim>>          gradient; // per dof
+      physics::solid::ElasticMaterial              material;
+    };
+
+    std::vector<double>
+    gather(const Vector &vec, const Weights &w) const;
+
+    const fe::FESpace        &space;
+    std::vector<MonitorPoint> points;
+    std::vector<Weights>      weights;
+    bool                      record_u, record_v, record_a, record_stress;
+    std::vector<std::string>  names;
+  };
+} // namespace archdam::output

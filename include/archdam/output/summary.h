@@ -1,0 +1,30 @@
+#pragma once
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace archdam::output
+{
+  /**
+   * `summary.json`: a small JSON document built from named entries (numbers,
+   * strings, and nested objects), written by rank 0 to a temporary name and
+   * renamed, so a reader never sees half a file.
+   */
+  class Summary
+  {
+  public:
+    void
+    set(const std::string &path, double value);
+    void
+    set(const std::string &path, const std::string &value);
+    /// Write as JSON; keys with '/' become nested objects.
+    void
+    write(const std::string &filename) const;
+
+  private:
+    // path -> JSON-encoded value, in insertion order
+    std::vector<std::pair<std::string, std::string>> entries;
+  };
+} // namespace archdam::output

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <archdam/analysis/analysis_parameters.h>
+#include <archdam/fe/fe_space.h>
+#include <archdam/geometry/mesh.h>
+#include <archdam/loads/ground_motion.h>
+#include <archdam/loads/static_loads.h>
+#include <archdam/output/field_writer.h>
+#include <archdam/output/monitors.h>
+#include <archdam/physics/foundation/foundation.h>
+#include <archdam/physics/solid/damping.h>
+#include <archdam/physics/solid/materials.h>
+#include <archdam/time/newmark.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace archdam
+{
+  /**
+   * All parameters of a case (architecture.md §4). Nothing global lives here:
+   * each module declares its own subsection and binds it to its own struct;
+   * this only aggregates them.
+   */
+  struct Parameters
+  {
+    geometry::MeshParameters                 mesh;
+    fe::FiniteElementParameters              finite_element;
+    physics::solid::MaterialParameters       materials;
+    physics::solid::DampingParameters        damping;
+    time::NewmarkParameters                  time_integration;
+    physics::foundation::FoundationParameters foundation;
+    loads::GroundMotionParameters            ground_motion;
+    loads::StaticLoadParameters              static_loads;
+    analysis::AnalysisParameters             analysis;
+    output::MonitorParameters                monitors;
+    output::OutputParameters                 output;
+
+    /// Directory of the parameter file: relative file names in it are
+    /// resolved against it.
+    std::string base_directory;
+
+    void
+    add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /**
+   * Read a case: the parameter file, then the overrides
+   * "Section/Subsection/Name=value" in order. Every problem (missing file,
+   * unknown section or parameter, value not matching its pattern, malformed
+   * override) is an InputError naming the file, line and parameter.
+   */
+  Parameters
+  read_parameters(const std::string &filename, const std::vector<std::string> &overrides);
+
+  /// Read a case from a string (tests and examples).
+  Parameters
+  parameters_from_string(const std::string &text);
+
+  /// Every parameter with its default, pattern and documentation.
+  void
+  print_parameters(std::ostream &out, dealii::ParameterHandler::OutputStyle style);
+} // namespace archdam

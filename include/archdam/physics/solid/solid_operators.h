@@ -1,0 +1,42 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/physics/solid/materials.h>
+
+#include <deal.II/base/tensor.h>
+
+namespace archdam::physics::solid
+{
+  /// Which solid cells carry inertia (the massless foundation has none).
+  enum class InertiaOf
+  {
+    dam,
+    dam_and_rock
+  };
+
+  /**
+   * Consistent mass M = int rho N^T N and stiffness
+   * K = int (lambda div N div N + 2 mu eps(N) : eps(N)) of the solid cells
+   * (numerics.md §1), assembled with the model's constraints (constrained rows
+   * and columns condensed, so the step unknowns there stay zero).
+   */
+  void
+  assemble_mass_and_stiffness(const fe::FESpace          &space,
+                              const MaterialParameters   &materials,
+                              InertiaOf                   inertia,
+                              SparseMatrix               &mass,
+                              SparseMatrix               &stiffness);
+
+  /**
+   * The load of a uniform acceleration field b acting on the mass of the chosen
+   * cells, F_i = int rho b . N_i. With b = -g e_z it is gravity; with b = e_d it
+   * is the influence load M iota_d of the relative formulation (numerics.md §5),
+   * whose effective earthquake load is -a_g,d(t) M iota_d.
+   */
+  void
+  assemble_inertia_load(const fe::FESpace               &space,
+                        const MaterialParameters        &materials,
+                        InertiaOf                        inertia,
+                        const dealii::Tensor<1, dim>    &b,
+                        Vector                          &load);
+} // namespace archdam::physics::solid

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/physics/solid/materials.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+namespace archdam::physics::solid
+{
+  /**
+   * Stress recovered from the displacement gradient (numerics.md §1) for
+   * output: the stress tensor and the major and minor principal stress
+   * (tension positive). Zero in water cells.
+   */
+  class StressPostprocessor : public dealii::DataPostprocessor<dim>
+  {
+  public:
+    explicit StressPostprocessor(const MaterialParameters &materials);
+
+    void
+    evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
+                          std::vector<dealii::Vector<double>> &computed) const override;
+    std::vector<std::string>
+    get_names() const override;
+    std::vector<dealii::DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+    dealii::UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const MaterialParameters &materials;
+  };
+
+  struct PeakStress
+  {
+    double             value = 0.;
+    dealii::Point<dim> where;
+  };
+
+  /**
+   * The largest major principal stress over the dam's quadrature points, for
+   * a ghosted displacement vector; the same on every rank.
+   */
+  PeakStress
+  peak_major_principal_stress(const fe::FESpace        &space,
+                              const MaterialParameters &materials,
+                              const Vector             &ghosted_u);
+} // namespace archdam::physics::solid

@@ -1,0 +1,27 @@
+#!/bin/bash
+# Install what ArchDam needs from Debian 12's packages, and nothing else.
+# Idempotent: packages already present are not touched, and apt-get is not
+# called at all when everything is there.
+set -euo pipefail
+
+packages=(
+  cmake make g++ perl             # build and deal.II's test macros
+  libdeal.ii-dev                  # deal.II 9.4 with PETSc/MUMPS, Trilinos, HDF5, MPI
+  openmpi-bin                     # mpirun for the MPI tests
+  libopenblas0-pthread            # 3-5x faster factorization than reference BLAS
+  numdiff                         # test output comparison
+  python3-matplotlib              # plots (/usr/bin/python3)
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing: ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  $SUDO apt-get update
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,110 @@
+#include <archdam/analysis/simulation.h>
+#include <archdam/base/input_error.h>
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+
+namespace archdam::analysis
+{
+  using namespace dealii;
+
+  namespace
+  {
+    std::string
+    duration_text(const double seconds)
+    {
+      const long s = std::lround(seconds);
+      std::ostringstream out;
+      if (s >= 3600)
+        out << s / 3600 << " h ";
+      if (s >= 60)
+        out << (s / 60) % 60 << " min ";
+      out << s % 60 << " s";
+      return out.str();
+    }
+  } // namespace
+
+  /**
+   * Dynamic stage (numerics.md §2 and §6, step 3): the generalized Newmark
+   * scheme from the static state at rest, under F(t) = F_static - M iota a_g(t),
+   * recording the monitors every step and the fields every few steps.
+   */
+  void
+  Simulation::run_dynamic_stage()
+  {
+    const double dt  = p.time_integration.time_step;
+    const double end = p.time_integration.end_time > 0 ? p.time_integration.end_time :
+                                                         ground_motion->duration();
+    if (end <= 0)
+      throw InputError("Time integration/End time is 0 and there is no ground motion to "
+                       "take the duration from.");
+    const unsigned int n_steps = static_cast<unsigned int>(std::lround(end / dt));
+    if (n_steps == 0)
+      throw InputError("Time integration: End time is shorter than one time step.");
+
+    history = std::make_unique<output::HistoryWriter>(p.output.directory,
+                                                      monitor->column_names(), comm);
+
+    const auto rayleigh = p.damping.rayleigh_coefficients();
+    std::unique_ptr<time::NewmarkIntegrator> newmark;
+    {
+      TimerOutput::Scope t(timer, "dynamic: factorization");
+      newmark = std::make_unique<time::NewmarkIntegrator>(p.time_integration, mass_matrix,
+                                                          stiffness_matrix, rayleigh,
+                                                          fe_space->constraints);
+    }
+    screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
+           << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
+           << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
+
+    current.time = 0.;
+    current.step = 0;
+    current.v    = 0.;
+    current.a    = 0.;
+    history->append(monitor->evaluate(current));
+
+    Vector     load;
+    fe_space->reinit(load);
+    const auto start       = std::chrono::steady_clock::now();
+    const auto elapsed     = [&] {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    double       last_report = 0.;
+    const double report_every = 10.; // seconds of wall time between progress lines
+
+    for (unsigned int n = 1; n <= n_steps; ++n)
+      {
+        {
+          TimerOutput::Scope t(timer, "dynamic: steps");
+          external_load(n * dt, load);
+          newmark->advance(load, current);
+          current.time = n * dt; // no drift from repeated additions
+        }
+        {
+          TimerOutput::Scope t(timer, "dynamic: monitors");
+          history->append(monitor->evaluate(current));
+        }
+        if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
+          write_fields();
+
+        if (p.output.progress && (elapsed() - last_report > report_every || n == n_steps))
+          {
+            last_report = elapsed();
+            screen << "  step " << n << "/" << n_steps << "  t = " << std::setprecision(4)
+                   << current.time << " s  (" << 100 * n / n_steps << " %)  ETA "
+                   << duration_text(last_report / n * (n_steps - n)) << std::endl;
+          }
+      }
+    history->finish();
+
+    summary.set("dynamic/time step [s]", dt);
+    summary.set("dynamic/steps", n_steps);
+    summary.set("dynamic/end time [s]", n_steps * dt);
+    summary.set("dynamic/beta1", p.time_integration.beta1);
+    summary.set("dynamic/beta2", p.time_integration.beta2);
+    summary.set("dynamic/rayleigh alpha [s^-1]", rayleigh.first);
+    summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
+    summary.set("dynamic/wall time per step [s]", elapsed() / n_steps);
+  }
+} // namespace archdam::analysis

@@ -1,0 +1,40 @@
+#include <archdam/analysis/simulation.h>
+#include <archdam/time/factorized_operator.h>
+
+namespace archdam::analysis
+{
+  using namespace dealii;
+
+  /**
+   * Static stage (numerics.md §6, step 1): K u = F_static with the fixed
+   * boundary, solved with a Cholesky factorization of K. The dynamic stage
+   * starts from this state at rest.
+   */
+  void
+  Simulation::run_static_stage()
+  {
+    {
+      TimerOutput::Scope   t(timer, "static");
+      time::FactorizedOperator stiffness_factor;
+      stiffness_factor.factorize(stiffness_matrix, true);
+      Vector rhs = static_load;
+      fe_space->constraints.set_zero(rhs);
+      stiffness_factor.solve(u_static, rhs);
+      current.u = u_static;
+    }
+
+    const double max_u = u_static.linfty_norm();
+    screen << "Static stage: max |u_i| = " << std::setprecision(4) << max_u << " m"
+           << std::endl;
+    summary.set("static/max nodal displacement component [m]", max_u);
+    for (unsigned int k = 0; k < monitor->monitor_points().size(); ++k)
+      {
+        const auto u = monitor->displacement(k, u_static);
+        for (unsigned int d = 0; d < dim; ++d)
+          summary.set("static/" + monitor->monitor_points()[k].name + ".u" +
+                        std::string(1, "xyz"[d]) + " [m]",
+                      u[d]);
+      }
+    write_fields();
+  }
+} // namespace archdam::analysis

@@ -1,0 +1,116 @@
+#include <archdam/analysis/simulation.h>
+#include <archdam/application/command_line.h>
+#include <archdam/base/input_error.h>
+#include <archdam/parameters/parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace archdam
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const char *usage =
+      "Usage:\n"
+      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]...\n"
+      "  archdam --print-parameters [prm|json|xml|latex]\n"
+      "  archdam --help\n";
+
+    ParameterHandler::OutputStyle
+    output_style(const std::string &name)
+    {
+      if (name == "prm")
+        return ParameterHandler::PRM;
+      if (name == "json")
+        return ParameterHandler::JSON;
+      if (name == "xml")
+        return ParameterHandler::XML;
+      if (name == "latex")
+        return ParameterHandler::LaTeX;
+      throw InputError("--print-parameters: unknown format '" + name +
+                       "' (prm, json, xml or latex).");
+    }
+
+    int
+    run(const std::vector<std::string> &args, std::ostream &out)
+    {
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          out << usage;
+          return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "--print-parameters")
+        {
+          if (args.size() > 2)
+            throw InputError("--print-parameters takes at most one format.");
+          if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            print_parameters(out, output_style(args.size() == 2 ? args[1] : "prm"));
+          return 0;
+        }
+
+      std::string              case_file;
+      std::vector<std::string> overrides;
+      for (unsigned int i = 0; i < args.size(); ++i)
+        if (args[i] == "--set")
+          {
+            if (i + 1 == args.size())
+              throw InputError("--set needs an argument \"Section/Name=value\".");
+            overrides.push_back(args[++i]);
+          }
+        else if (args[i].rfind("--set=", 0) == 0)
+          overrides.push_back(args[i].substr(6));
+        else if (args[i].rfind("-", 0) == 0)
+          throw InputError("Unknown option '" + args[i] + "'.\n" + usage);
+        else if (case_file.empty())
+          case_file = args[i];
+        else
+          throw InputError("Only one case file, got '" + case_file + "' and '" + args[i] +
+                           "'.");
+      if (case_file.empty())
+        throw InputError(std::string("No case file given.\n") + usage);
+
+      const Parameters      p = read_parameters(case_file, overrides);
+      analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
+      simulation.run();
+      return 0;
+    }
+  } // namespace
+
+  int
+  run_command_line(const int argc, const char *const *argv, std::ostream &out, std::ostream &err)
+  {
+    const bool talk = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    try
+      {
+        return run(std::vector<std::string>(argv + 1, argv + argc), out);
+      }
+    catch (const InputError &e)
+      {
+        if (talk)
+          err << "archdam: error: " << e.what() << std::endl;
+        return 1;
+      }
+    catch (const ExceptionBase &e)
+      {
+        if (talk)
+          {
+            err << "archdam: error: ";
+            e.print_info(err);
+            err << std::endl;
+          }
+        return 1;
+      }
+    catch (const std::exception &e)
+      {
+        if (talk)
+          err << "archdam: internal error: " << e.what() << std::endl;
+        return 2;
+      }
+  }
+} // namespace archdam

@@ -1,0 +1,126 @@
+#include <archdam/base/input_error.h>
+#include <archdam/output/summary.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <sstream>
+
+namespace archdam::output
+{
+  namespace
+  {
+    std::string
+    quoted(const std::string &s)
+    {
+      std::string r = "\"";
+      for (const char c : s)
+        switch (c)
+          {
+            case '"':
+              r += "\\\"";
+              break;
+            case '\\':
+              r += "\\\\";
+              break;
+            case '\n':
+              r += "\\n";
+              break;
+            default:
+              r += c;
+          }
+      return r + "\"";
+    }
+
+    void
+    upsert(std::vector<std::pair<std::string, std::string>> &entries,
+           const std::string &path, const std::string &json)
+    {
+      for (auto &e : entries)
+        if (e.first == path)
+          {
+            e.second = json;
+            return;
+          }
+      entries.emplace_back(path, json);
+    }
+  } // namespace
+
+  void
+  Summary::set(const std::string &path, const double value)
+  {
+    std::ostringstream s;
+    s.precision(12);
+    if (std::isfinite(value))
+      s << value;
+    else
+      s << "null";
+    upsert(entries, path, s.str());
+  }
+
+  void
+  Summary::set(const std::string &path, const std::string &value)
+  {
+    upsert(entries, path, quoted(value));
+  }
+
+  void
+  Summary::write(const std::string &filename) const
+  {
+    // Build a tree of keys, preserving first-insertion order at each level.
+    struct Node
+    {
+      std::vector<std::pair<std::string, Node>> children;
+      std::string                               value;
+      Node &
+      child(const std::string &key)
+      {
+        for (auto &c : children)
+          if (c.first == key)
+            return c.second;
+        children.emplace_back(key, Node());
+        return children.back().second;
+      }
+    } root;
+    for (const auto &[path, json] : entries)
+      {
+        Node *n = &root;
+        for (const auto &key : dealii::Utilities::split_string_list(path, '/'))
+          n = &n->child(key);
+        n->value = json;
+      }
+
+    std::ostringstream out;
+    const std::function<void(const Node &, unsigned int)> print = [&](const Node  &n,
+                                                                      unsigned int depth) {
+      if (n.children.empty())
+        {
+          out << n.value;
+          return;
+        }
+      out << "{\n";
+      for (unsigned int i = 0; i < n.children.size(); ++i)
+        {
+          out << std::string(2 * (depth + 1), ' ') << quoted(n.children[i].first) << ": ";
+          print(n.children[i].second, depth + 1);
+          out << (i + 1 < n.children.size() ? ",\n" : "\n");
+        }
+      out << std::string(2 * depth, ' ') << "}";
+    };
+    print(root, 0);
+    out << "\n";
+
+    const std::string tmp = filename + ".tmp";
+    {
+      std::ofstream f(tmp);
+      f << out.str();
+      if (!f)
+        throw InputError("Output: cannot write '" + tmp + "'.");
+    }
+    if (std::rename(tmp.c_str(), filename.c_str()) != 0)
+      throw InputError("Output: cannot rename '" + tmp + "' to '" + filename + "'.");
+  }
+} // namespace archdam::output

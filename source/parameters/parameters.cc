@@ -1,0 +1,159 @@
+#include <archdam/base/input_error.h>
+#include <archdam/parameters/parameters.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace archdam
+{
+  using namespace dealii;
+
+  void
+  Parameters::add_parameters(ParameterHandler &prm)
+  {
+    const auto section = [&prm](const std::string &name, const auto &declare) {
+      prm.enter_subsection(name);
+      declare();
+      prm.leave_subsection();
+    };
+    section("Mesh", [&] { mesh.add_parameters(prm); });
+    section("Finite element", [&] { finite_element.add_parameters(prm); });
+    section("Materials", [&] { materials.add_parameters(prm); });
+    section("Damping", [&] { damping.add_parameters(prm); });
+    section("Time integration", [&] { time_integration.add_parameters(prm); });
+    section("Foundation", [&] { foundation.add_parameters(prm); });
+    section("Ground motion", [&] { ground_motion.add_parameters(prm); });
+    section("Static loads", [&] { static_loads.add_parameters(prm); });
+    section("Analysis", [&] { analysis.add_parameters(prm); });
+    section("Monitors", [&] { monitors.add_parameters(prm); });
+    section("Output", [&] { output.add_parameters(prm); });
+  }
+
+  namespace
+  {
+    /// The "additional information" of a deal.II exception, without the
+    /// source location and stack trace meant for developers.
+    std::string
+    user_message(const ExceptionBase &e)
+    {
+      std::ostringstream s;
+      e.print_info(s);
+      std::string clean;
+      for (const auto &line : Utilities::split_string_list(s.str(), '\n'))
+        clean += (clean.empty() ? "" : " ") + Utilities::trim(line);
+      return clean;
+    }
+
+    /// Apply one "Section/Subsection/Name=value" override.
+    void
+    apply_override(ParameterHandler &prm, const std::string &assignment)
+    {
+      const auto eq = assignment.find('=');
+      if (eq == std::string::npos)
+        throw InputError("--set \"" + assignment +
+                         "\": expected \"Section/Subsection/Name=value\".");
+      const std::string path  = Utilities::trim(assignment.substr(0, eq));
+      const std::string value = Utilities::trim(assignment.substr(eq + 1));
+      const auto        parts = Utilities::split_string_list(path, '/');
+      if (parts.size() < 2)
+        throw InputError("--set \"" + assignment +
+                         "\": the parameter needs its section, as in "
+                         "\"Time integration/Time step=0.005\".");
+
+      // A misspelt section is reported as such instead of being created.
+      const std::vector<std::string> sections(parts.begin(), parts.end() - 1);
+      if (!prm.subsection_path_exists(sections))
+        throw InputError("--set \"" + assignment + "\": no section \"" +
+                         path.substr(0, path.find_last_of('/')) +
+                         "\" (see archdam --print-parameters).");
+      for (const auto &s : sections)
+        prm.enter_subsection(s);
+      try
+        {
+          prm.set(parts.back(), value);
+        }
+      catch (const ParameterHandler::ExcEntryUndeclared &)
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+          throw InputError("--set \"" + assignment + "\": no parameter \"" + parts.back() +
+                           "\" in section \"" + path.substr(0, path.find_last_of('/')) +
+                           "\" (see archdam --print-parameters).");
+        }
+      catch (const ExceptionBase &e)
+        {
+          for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+            prm.leave_subsection();
+          throw InputError("--set \"" + assignment + "\": " + user_message(e));
+        }
+      for (unsigned int i = 0; i + 1 < parts.size(); ++i)
+        prm.leave_subsection();
+    }
+
+    void
+    check(const Parameters &p)
+    {
+      p.time_integration.check();
+      p.damping.rayleigh_coefficients();
+      output::parse_monitor_points(p.monitors.points);
+      if (p.analysis.stages.empty())
+        throw InputError("Analysis/Stages: nothing to run.");
+    }
+  } // namespace
+
+  Parameters
+  read_parameters(const std::string &filename, const std::vector<std::string> &overrides)
+  {
+    std::ifstream in(filename);
+    if (!in)
+      throw InputError("Cannot open the parameter file '" + filename + "'.");
+
+    Parameters       p;
+    ParameterHandler prm;
+    p.add_parameters(prm);
+    try
+      {
+        prm.parse_input(in, filename, "", false);
+      }
+    catch (const ExceptionBase &e)
+      {
+        throw InputError(user_message(e));
+      }
+    for (const auto &o : overrides)
+      apply_override(prm, o);
+
+    const auto slash = filename.find_last_of('/');
+    p.base_directory = slash == std::string::npos ? "." : filename.substr(0, slash);
+    if (p.analysis.case_name.empty())
+      {
+        const std::string base = filename.substr(slash == std::string::npos ? 0 : slash + 1);
+        p.analysis.case_name   = base.substr(0, base.find_last_of('.'));
+      }
+    check(p);
+    return p;
+  }
+
+  Parameters
+  parameters_from_string(const std::string &text)
+  {
+    Parameters       p;
+    ParameterHandler prm;
+    p.add_parameters(prm);
+    prm.parse_input_from_string(text, "", false);
+    p.base_directory = ".";
+    check(p);
+    return p;
+  }
+
+  void
+  print_parameters(std::ostream &out, const ParameterHandler::OutputStyle style)
+  {
+    Parameters       p;
+    ParameterHandler prm;
+    p.add_parameters(prm);
+    prm.print_parameters(out, style);
+  }
+} // namespace archdam

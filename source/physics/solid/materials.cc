@@ -1,0 +1,45 @@
+#include <archdam/geometry/ids.h>
+#include <archdam/physics/solid/materials.h>
+
+namespace archdam::physics::solid
+{
+  using namespace dealii;
+
+  void
+  ElasticMaterial::add_parameters(ParameterHandler &prm)
+  {
+    prm.add_parameter("Young's modulus", youngs_modulus, "Young's modulus E [Pa].",
+                      Patterns::Double(0., Patterns::Double::max_double_value));
+    prm.add_parameter("Poisson's ratio", poissons_ratio, "Poisson's ratio nu [-].",
+                      Patterns::Double(-0.999, 0.4999));
+    prm.add_parameter("Density", density,
+                      "Mass density [kg/m^3] (a unit weight of 24 kN/m^3 is "
+                      "24000/9.81 = 2446.5 kg/m^3).",
+                      Patterns::Double(0.));
+  }
+
+  void
+  MaterialParameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Concrete");
+    concrete.add_parameters(prm);
+    prm.leave_subsection();
+    prm.enter_subsection("Rock");
+    rock.add_parameters(prm);
+    prm.leave_subsection();
+  }
+
+  const ElasticMaterial &
+  MaterialParameters::of(const types::material_id id) const
+  {
+    return ids::is_dam(id) ? concrete : rock;
+  }
+
+  std::pair<double, double>
+  principal_stresses(const SymmetricTensor<2, dim> &stress)
+  {
+    // eigenvalues() returns them in descending order.
+    const auto ev = eigenvalues(stress);
+    return {ev[0], ev[dim - 1]};
+  }
+} // namespace archdam::physics::solid

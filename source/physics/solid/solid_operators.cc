@@ -1,0 +1,116 @@
+#include <archdam/geometry/ids.h>
+#include <archdam/physics/solid/solid_operators.h>
+
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+namespace archdam::physics::solid
+{
+  using namespace dealii;
+
+  namespace
+  {
+    bool
+    has_inertia(const types::material_id id, const InertiaOf inertia)
+    {
+      return ids::is_dam(id) || (inertia == InertiaOf::dam_and_rock && id == ids::rock);
+    }
+  } // namespace
+
+  void
+  assemble_mass_and_stiffness(const fe::FESpace        &space,
+                              const MaterialParameters &materials,
+                              const InertiaOf           inertia,
+                              SparseMatrix             &mass,
+                              SparseMatrix             &stiffness)
+  {
+    space.reinit(mass);
+    space.reinit(stiffness);
+
+    hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
+                                   update_values | update_gradients | update_JxW_values);
+    FullMatrix<double>                   cell_m, cell_k;
+    std::vector<types::global_dof_index> dofs;
+    std::vector<SymmetricTensor<2, dim>> eps;
+    std::vector<double>                  div;
+    std::vector<Tensor<1, dim>>          phi;
+
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim>   &fv  = hp_fe_values.get_present_fe_values();
+          const unsigned int     n   = fv.dofs_per_cell;
+          const ElasticMaterial &mat = materials.of(cell->material_id());
+          const double rho = has_inertia(cell->material_id(), inertia) ? mat.density : 0.;
+          const double lambda = mat.lambda(), mu = mat.mu();
+
+          cell_m.reinit(n, n);
+          cell_k.reinit(n, n);
+          eps.resize(n);
+          div.resize(n);
+          phi.resize(n);
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  eps[i] = fv[space.displacement].symmetric_gradient(i, q);
+                  div[i] = fv[space.displacement].divergence(i, q);
+                  phi[i] = fv[space.displacement].value(i, q);
+                }
+              const double dx = fv.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  {
+                    cell_m(i, j) += rho * phi[i] * phi[j] * dx;
+                    cell_k(i, j) += (lambda * div[i] * div[j] + 2 * mu * eps[i] * eps[j]) * dx;
+                  }
+            }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              {
+                cell_m(i, j) = cell_m(j, i);
+                cell_k(i, j) = cell_k(j, i);
+              }
+
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
+          space.constraints.distribute_local_to_global(cell_m, dofs, mass);
+          space.constraints.distribute_local_to_global(cell_k, dofs, stiffness);
+        }
+    mass.compress(VectorOperation::add);
+    stiffness.compress(VectorOperation::add);
+  }
+
+  void
+  assemble_inertia_load(const fe::FESpace        &space,
+                        const MaterialParameters &materials,
+                        const InertiaOf           inertia,
+                        const Tensor<1, dim>     &b,
+                        Vector                   &load)
+  {
+    space.reinit(load);
+    hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
+                                   update_values | update_JxW_values);
+    dealii::Vector<double>               cell_f;
+    std::vector<types::global_dof_index> dofs;
+
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index &&
+          has_inertia(cell->material_id(), inertia))
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim> &fv  = hp_fe_values.get_present_fe_values();
+          const double         rho = materials.of(cell->material_id()).density;
+          cell_f.reinit(fv.dofs_per_cell);
+          for (const unsigned int q : fv.quadrature_point_indices())
+            for (unsigned int i = 0; i < fv.dofs_per_cell; ++i)
+              cell_f(i) += rho * (b * fv[space.displacement].value(i, q)) * fv.JxW(q);
+          dofs.resize(fv.dofs_per_cell);
+          cell->get_dof_indices(dofs);
+          space.constraints.distribute_local_to_global(cell_f, dofs, load);
+        }
+    load.compress(VectorOperation::add);
+  }
+} // namespace archdam::physics::solid
