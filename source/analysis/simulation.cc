@@ -34,7 +34,8 @@ namespace archdam::analysis
       }
     MPI_Barrier(comm);
 
-    setup_model();
+    if (!fe_space)
+      setup_model();
     if (p.analysis.runs("static"))
       run_static_stage();
     if (p.analysis.runs("dynamic"))
@@ -127,6 +128,7 @@ namespace archdam::analysis
       {
         const auto &rows  = history->rows();
         const auto &names = history->columns();
+        screen << "Peak values (monitors):" << std::endl;
         for (unsigned int c = 1; c < names.size(); ++c)
           {
             unsigned int best = 0;
@@ -135,6 +137,8 @@ namespace archdam::analysis
                 best = r;
             summary.set("peaks/" + names[c] + "/value", rows[best][c]);
             summary.set("peaks/" + names[c] + "/time [s]", rows[best][0]);
+            screen << "  peak " << names[c] << " = " << std::setprecision(4) << rows[best][c]
+                   << " at t = " << rows[best][0] << " s" << std::endl;
           }
       }
     if (p.output.field_interval > 0 && fe_space->dof_handler.n_dofs() > 0)

@@ -33,6 +33,10 @@ namespace archdam::analysis
     void
     run();
 
+    /// Build the model only: mesh, DOFs, M, K and loads (run() does it first).
+    void
+    setup_model();
+
     // What a run leaves behind, for tests and benchmarks.
     const fe::FESpace &
     space() const
@@ -72,11 +76,10 @@ namespace archdam::analysis
 
   private:
     void
-    setup_model();
-    void
     run_static_stage();
     void
     run_dynamic_stage();
+    /// summary.json, and the peaks on screen.
     void
     write_summary();
     /// Fields of the current state, and the stress peak over the dam.

@@ -1,0 +1,54 @@
+// Helpers shared by ArchDam's tests. Every verification test compares with a
+// reference computed independently inside the test (closed form, series, a
+// second method) and prints a verdict with the stated tolerance; the .output
+// file then records the verdicts, never raw numbers produced by the code alone.
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace archdam::testing
+{
+  /// Only rank 0 prints; the others write to a sink.
+  inline std::ostream &
+  log()
+  {
+    static std::ostringstream sink;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      return std::cout;
+    sink.str("");
+    return sink;
+  }
+
+  /**
+   * Print "what: value (reference ref), relative error below tol: yes|NO".
+   * Values are printed with @p digits significant digits so that round-off
+   * (serial against MPI runs) does not change the text; the verdict is what
+   * matters.
+   */
+  inline bool
+  check_relative(const std::string &what, const double value, const double reference,
+                 const double tol, const unsigned int digits = 4)
+  {
+    const double err = std::abs(value - reference) / std::abs(reference);
+    const bool   ok  = err < tol;
+    log() << what << ": " << std::setprecision(digits) << value << " (reference "
+          << reference << "), relative error below " << tol << ": " << (ok ? "yes" : "NO")
+          << std::endl;
+    return ok;
+  }
+
+  /// Print "what: below tol: yes|NO" for an error measure, without its value.
+  inline bool
+  check_below(const std::string &what, const double value, const double tol)
+  {
+    const bool ok = value < tol;
+    log() << what << " below " << tol << ": " << (ok ? "yes" : "NO") << std::endl;
+    return ok;
+  }
+} // namespace archdam::testing
