@@ -16,7 +16,10 @@ namespace archdam::analysis
     : p(p)
     , comm(comm)
     , screen(out, Utilities::MPI::this_mpi_process(comm) == 0)
-    , timer(comm, screen, TimerOutput::never, TimerOutput::wall_times)
+    // No communicator: the timer must not communicate in its destructor when
+    // an input error unwinds the stack; statistics over ranks are gathered
+    // explicitly at the end.
+    , timer(screen, TimerOutput::never, TimerOutput::wall_times)
     , triangulation(comm)
   {}
 

@@ -40,10 +40,12 @@ namespace archdam
     int
     run(const std::vector<std::string> &args, std::ostream &out)
     {
-      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+      if (args.empty())
+        throw InputError(std::string("No case file given.\n") + usage);
+      if (args[0] == "--help" || args[0] == "-h")
         {
           out << usage;
-          return args.empty() ? 1 : 0;
+          return 0;
         }
       if (args[0] == "--print-parameters")
         {
