@@ -19,23 +19,8 @@ namespace archdam
     const char *usage =
       "Usage:\n"
       "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]...\n"
-      "  archdam --print-parameters [prm|json|xml|latex]\n"
+      "  archdam --print-parameters [text|json|xml|latex]\n"
       "  archdam --help\n";
-
-    ParameterHandler::OutputStyle
-    output_style(const std::string &name)
-    {
-      if (name == "prm")
-        return ParameterHandler::PRM;
-      if (name == "json")
-        return ParameterHandler::JSON;
-      if (name == "xml")
-        return ParameterHandler::XML;
-      if (name == "latex")
-        return ParameterHandler::LaTeX;
-      throw InputError("--print-parameters: unknown format '" + name +
-                       "' (prm, json, xml or latex).");
-    }
 
     int
     run(const std::vector<std::string> &args, std::ostream &out)
@@ -52,7 +37,7 @@ namespace archdam
           if (args.size() > 2)
             throw InputError("--print-parameters takes at most one format.");
           if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-            print_parameters(out, output_style(args.size() == 2 ? args[1] : "prm"));
+            print_parameters(out, args.size() == 2 ? args[1] : "text");
           return 0;
         }
 

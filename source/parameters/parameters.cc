@@ -2,6 +2,9 @@
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 #include <deal.II/base/utilities.h>
 
 #include <fstream>
@@ -148,12 +151,68 @@ namespace archdam
     return p;
   }
 
+  namespace
+  {
+    /// One parameter file in which every entry shows its documentation, its
+    /// allowed values and its default: the reference and a template at once.
+    void
+    print_reference(const boost::property_tree::ptree &node, const unsigned int depth,
+                    std::ostream &out)
+    {
+      const std::string indent(2 * depth, ' ');
+      for (const auto &[key, child] : node)
+        if (child.get_child_optional("value"))
+          {
+            std::string line;
+            for (const auto &word : Utilities::split_string_list(
+                   child.get<std::string>("documentation") + " Allowed: " +
+                     child.get<std::string>("pattern_description"),
+                   ' '))
+              {
+                if (!line.empty() && indent.size() + 2 + line.size() + word.size() > 79)
+                  {
+                    out << indent << "#" << line << '\n';
+                    line.clear();
+                  }
+                line += " " + word;
+              }
+            out << indent << "#" << line << '\n'
+                << indent << "set " << key << " = " << child.get<std::string>("default_value")
+                << "\n\n";
+          }
+        else
+          {
+            out << indent << "subsection " << key << "\n\n";
+            print_reference(child, depth + 1, out);
+            out << indent << "end\n\n";
+          }
+    }
+  } // namespace
+
   void
-  print_parameters(std::ostream &out, const ParameterHandler::OutputStyle style)
+  print_parameters(std::ostream &out, const std::string &format)
   {
     Parameters       p;
     ParameterHandler prm;
     p.add_parameters(prm);
-    prm.print_parameters(out, style);
+    if (format == "json")
+      prm.print_parameters(out, ParameterHandler::JSON);
+    else if (format == "xml")
+      prm.print_parameters(out, ParameterHandler::XML);
+    else if (format == "latex")
+      prm.print_parameters(out, ParameterHandler::LaTeX);
+    else if (format == "text")
+      {
+        std::stringstream json;
+        prm.print_parameters(json, ParameterHandler::JSON);
+        boost::property_tree::ptree tree;
+        boost::property_tree::read_json(json, tree);
+        out << "# ArchDam parameters: every entry with its documentation, allowed values\n"
+               "# and default. A case file sets only what differs from the default.\n\n";
+        print_reference(tree, 0, out);
+      }
+    else
+      throw InputError("--print-parameters: unknown format '" + format +
+                       "' (text, json, xml or latex).");
   }
 } // namespace archdam

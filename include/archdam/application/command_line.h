@@ -7,7 +7,9 @@ namespace archdam
   /**
    * The `archdam` command (MPI must be initialized by the caller):
    *   archdam CASE.prm [--set "Section/Name=value"]...   run a case
-   *   archdam --print-parameters [prm|json|xml|latex]       the parameter reference
+   *   archdam --print-parameters [text|json|xml|latex]  the parameter reference
+ *                                  (text: a parameter file showing each entry's
+ *                                  documentation, allowed values and default)
    *   archdam --help
    * User errors (InputError, deal.II exceptions thrown while reading input)
    * are reported on @p err as one message and give exit code 1; anything

@@ -60,7 +60,8 @@ namespace archdam
   Parameters
   parameters_from_string(const std::string &text);
 
-  /// Every parameter with its default, pattern and documentation.
+  /// Every parameter with its default, allowed values and documentation;
+  /// format "text" (a commented parameter file), "json", "xml" or "latex".
   void
-  print_parameters(std::ostream &out, dealii::ParameterHandler::OutputStyle style);
+  print_parameters(std::ostream &out, const std::string &format);
 } // namespace archdam
