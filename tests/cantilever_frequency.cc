@@ -39,13 +39,20 @@
 // Tolerance. The FE model is 3-D elasticity, not a beam: the two differ by
 // O((h/L)^2) effects beyond what Timoshenko captures (the 3-D clamp prevents
 // the shear warping of the root section, the section is not exactly rigid in
-// its plane, k = 5/6 is exact only for the Saint-Venant shear flow away from
-// the ends). The whole shear + rotary inertia correction is 0.65 % here, and
-// these effects are a fraction of it, so the converged 3-D frequency should lie
-// within a few tenths of a percent of Timoshenko's; 0.5 % is asked of the
-// finest mesh (measured: 0.22 %). The errors of the three meshes must also
-// decrease monotonically (Q2 discretization error, O(h^4) in the frequency,
-// dominates on the coarse meshes).
+// its plane, k = 5/6 holds for the Saint-Venant shear flow away from the
+// ends). The whole shear + rotary-inertia correction is 0.65 % here
+// ((h/L)^2 = 1 %), and these effects are a small fraction of it. The finest
+// mesh is asked to be within 0.2 % of Timoshenko: well above what remains
+// (Q2 discretization error of the 3x3x12 mesh ~0.01 % from the convergence
+// sequence, a 3-D/Timoshenko difference of a few 1e-5 by extrapolation, and
+// ~0.005 % scatter of the zero-crossing measurement from the higher modes
+// excited by the pulse, seen by varying pulse, dt and record length), and
+// less than a third of the Timoshenko/Euler-Bernoulli gap, so a model without
+// shear deformation or rotary inertia, or with a mass or stiffness off by
+// 0.4 %, fails. The errors of the three meshes must decrease monotonically
+// (measured 0.55 %, 0.049 %, 0.013 %: Q2 discretization error, O(h^4) in the
+// frequency, dominates on the coarse meshes), and the finest mesh must be
+// closer to Timoshenko than to Euler-Bernoulli.
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/parameters/parameters.h>
@@ -58,12 +65,12 @@
 #include <functional>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "archdam_tests.h"
 
-using archdam::testing::check_below;
 using archdam::testing::check_relative;
 using archdam::testing::log;
 
@@ -148,15 +155,15 @@ namespace
   {
     using State = std::array<double, 4>;
     const auto rhs = [&](const State &y) {
-      return State{y[1] + y[2] / (k_shear * G * A), y[3] / (E * I),
-                   -rho * A * omega * omega * y[0], -y[2] - rho * I * omega * omega * y[1]};
+      return State{{y[1] + y[2] / (k_shear * G * A), y[3] / (E * I),
+                    -rho * A * omega * omega * y[0], -y[2] - rho * I * omega * omega * y[1]}};
     };
     const auto integrate = [&](State y) {
       const unsigned int n  = 2000;
       const double       dx = length / n;
       for (unsigned int i = 0; i < n; ++i)
         {
-          State      k1 = rhs(y), tmp;
+          State k1 = rhs(y), tmp;
           for (unsigned int j = 0; j < 4; ++j)
             tmp[j] = y[j] + 0.5 * dx * k1[j];
           State k2 = rhs(tmp);
@@ -171,9 +178,8 @@ namespace
         }
       return y;
     };
-    // Scale Q and M so that both columns are O(1).
-    const State a = integrate({0., 0., 1., 0.});
-    const State c = integrate({0., 0., 0., length});
+    const State a = integrate({{0., 0., 1., 0.}});
+    const State c = integrate({{0., 0., 0., 1.}});
     return a[2] * c[3] - a[3] * c[2];
   }
 
@@ -184,14 +190,14 @@ namespace
   {
     if (x == 0.)
       return 0.;
-    const double scale = std::pow(10., digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(x)))));
+    const int    exponent = static_cast<int>(std::floor(std::log10(std::abs(x))));
+    const double scale    = std::pow(10., digits - 1 - exponent);
     return std::round(x * scale) / scale;
   }
 
   struct Measurement
   {
-    double       frequency;      // Hz, corrected for the period elongation
-    double       raw_frequency;  // Hz, as measured
+    double       frequency; // Hz, corrected for the period elongation
     unsigned int n_crossings;
   };
 
@@ -277,7 +283,7 @@ namespace
     const double W           = 2. * M_PI / (2. * half_period);
     // Undo the period elongation of the average-acceleration rule.
     const double w = 2. / dt * std::tan(0.5 * W * dt);
-    return {w / (2. * M_PI), W / (2. * M_PI), static_cast<unsigned int>(crossings.size())};
+    return {w / (2. * M_PI), static_cast<unsigned int>(crossings.size())};
   }
 } // namespace
 
@@ -366,14 +372,16 @@ main(int argc, char **argv)
                 << " zero crossings, f1 = " << std::setprecision(4) << m.frequency
                 << " Hz, error against Timoshenko " << rounded(100. * e, 2) << " %"
                 << std::endl;
-          check_below("  |measured - corrected| / f1 (period elongation correction)",
-                      std::abs(m.raw_frequency - m.frequency) / m.frequency, 1e-3);
         }
       bool decreasing = true;
       for (unsigned int i = 1; i < errors.size(); ++i)
         decreasing = decreasing && errors[i] < errors[i - 1];
       log() << "error decreases with refinement: " << (decreasing ? "yes" : "NO") << std::endl;
-      check_relative("finest mesh f1 [Hz] against Timoshenko", f_finest, f_ref, 5e-3, 4);
+      check_relative("finest mesh f1 [Hz] against Timoshenko", f_finest, f_ref, 2e-3, 4);
+      const double f_eb = w_eb / (2 * M_PI);
+      log() << "finest mesh closer to Timoshenko than to Euler-Bernoulli: "
+            << (std::abs(f_finest - f_ref) < std::abs(f_finest - f_eb) ? "yes" : "NO")
+            << std::endl;
     }
   catch (const std::exception &e)
     {

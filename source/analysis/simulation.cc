@@ -93,7 +93,12 @@ namespace archdam::analysis
   void
   Simulation::external_load(const double t, Vector &load) const
   {
-    load = static_load;
+    // The static loads act from the static stage on; without it the dynamic
+    // stage starts unloaded and at rest, a consistent initial state (a0 = 0).
+    if (p.analysis.runs("static"))
+      load = static_load;
+    else
+      load = 0.;
     const Tensor<1, dim> ag = ground_motion->acceleration(t);
     for (unsigned int d = 0; d < dim; ++d)
       if (ag[d] != 0.)

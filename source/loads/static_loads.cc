@@ -7,7 +7,9 @@ namespace archdam::loads
   void
   StaticLoadParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Gravity", gravity, "Apply the self-weight of the dam.",
+    prm.add_parameter("Gravity", gravity, "Apply the self-weight of the dam (in the static stage, and from there on "
+                      "in the dynamic stage; without a static stage the dynamic "
+                      "stage starts unloaded at rest).",
                       Patterns::Bool());
     prm.add_parameter("Gravitational acceleration", g, "g [m/s^2].",
                       Patterns::Double(0.));

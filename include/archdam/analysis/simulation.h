@@ -86,7 +86,8 @@ namespace archdam::analysis
     void
     write_fields();
 
-    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation).
+    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation);
+    /// F_static only if the static stage runs.
     void
     external_load(double t, Vector &load) const;
 
