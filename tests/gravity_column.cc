@@ -24,8 +24,11 @@
 // the 1-D FE solution of E w'' = rho g, w(0) = 0, E w'(H) = 0 (uniqueness).
 //   - Degree 2: u_z is quadratic, in the space, so u_h = u exactly (the Gauss
 //     rules integrate the load and the stiffness exactly on these box cells).
-//     Only round-off remains: relative error <~ cond(K) eps ~ 1e-12, tolerance
-//     1e-9 (the brief's 1e-9, three orders of margin).
+//     Only round-off remains: a backward-stable Cholesky solve, relative
+//     error of order cond(K) eps, far below 1e-9 for a model of ~1300
+//     unknowns; 1e-9 keeps orders of margin above round-off while any real
+//     defect fails it (Poisson's ratio 0.01 instead of 0, whose clamped base
+//     then restrains the lateral contraction, makes 48 of the 59 checks fail).
 //   - Degree 1: for a 1-D two-point problem with constant coefficient the
 //     linear FE solution is exact at the nodes (the Green's function of each
 //     node is piecewise linear, hence in the space; Strang & Fix, Tong 1969),
@@ -73,7 +76,7 @@ namespace
   constexpr double H   = 20.0;  // height [m]
   constexpr unsigned int n_z = 8; // cells over the height
   constexpr double h   = H / n_z;
-  constexpr double E   = 20e9;  // Pa
+  constexpr double E   = 25e9;  // Pa
   constexpr double rho = 2500.; // kg/m^3
   constexpr double g   = 9.81;  // m/s^2
 
@@ -95,10 +98,10 @@ namespace
   };
   // Monitors at x = 0.7, y = 1.3 (inside the cells across the section, whose
   // faces are at x, y = 0, 1, 2): nodes (z = 5, 12.5, 20 = top), cell
-  // midpoints (3.75, 11.25, 18.75) and a point off the midpoint (6).
+  // midpoints (3.75, 11.25, 18.75) and a point off the midpoint (6.4).
   const std::vector<Monitor> monitors = {{"n1", 5.0},    {"n2", 12.5},   {"top", 20.0},
                                          {"m1", 3.75},   {"m2", 11.25},  {"m3", 18.75},
-                                         {"q1", 6.0}};
+                                         {"q1", 6.4}};
 
   bool
   at_node(const double z)
@@ -201,13 +204,22 @@ namespace
             log() << m.name << " |s3 - sigma_zz(z)| <= rho g h / 2: "
                   << (deviation <= rho * g * h / 2 * (1 + tol) ? "yes" : "NO") << std::endl;
           }
-        check_below(m.name + " |s1| / (rho g H)", std::abs(s1) / s_scale, tol);
+        // s1 = 0 is a double eigenvalue (s1 = s2 = 0): deal.II's closed-form
+        // eigenvalues() behind principal_stresses() computes it through
+        // acos(r) with r = -1 + O(eps), whose slope is infinite there, so its
+        // error is O(sqrt(eps)) |sigma| ~ 1e-8 rho g H even though the stress
+        // tensor itself is accurate to round-off (its off-diagonal and
+        // lateral entries are ~1e-10 Pa). Measured: up to 4e-3 Pa for
+        // |sigma| = 4e5 Pa in random perturbations of diag(0, 0, sigma_zz) of
+        // size 1e-9 Pa. Hence 1e-7 here; s3, the simple eigenvalue, is only
+        // affected at second order (O(eps)) and keeps the 1e-9 above.
+        check_below(m.name + " |s1| / (rho g H)", std::abs(s1) / s_scale, 1e-7);
       }
 
     // Base reaction (variational) and base traction, computed here from the
     // static displacement with Hooke's law written out (lambda, mu of E, nu).
     const fe::FESpace &space = sim.space();
-    Vector             u;
+    archdam::Vector             u;
     space.reinit_ghosted(u);
     u = sim.static_displacement();
     const double nu = 0., lambda = E * nu / ((1 + nu) * (1 - 2 * nu)),
@@ -252,7 +264,7 @@ namespace
             }
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&
-                cell->face(f)->boundary_id() == geometry::ids::foundation_bottom)
+                cell->face(f)->boundary_id() == ids::foundation_bottom)
               {
                 fv_face.reinit(cell, f);
                 fv_face[space.displacement].get_function_gradients(u, face_grads);

@@ -80,6 +80,12 @@ namespace
                           {0.4e-3, -0.8e-3, -1.2e-3}});
 
   double
+  box_size(const unsigned int d)
+  {
+    return d == 0 ? L : d == 1 ? W : H;
+  }
+
+  double
   exact_u(const Point<dim> &x, const unsigned int c)
   {
     return u0[c] + (G * x)[c];
@@ -132,7 +138,7 @@ namespace
   {
     const double tol = 1e-10;
     for (unsigned int d = 0; d < dim; ++d)
-      if (std::abs(x[d]) < tol || std::abs(x[d] - std::array<double, 3>{L, W, H}[d]) < tol)
+      if (std::abs(x[d]) < tol || std::abs(x[d] - box_size(d)) < tol)
         return x;
     const double s = x[0] / L, t = x[1] / W, r = x[2] / H;
     const double bubble =
@@ -174,10 +180,10 @@ namespace
   /// inverse iteration (with the factorization) for the smallest. Rayleigh
   /// quotients, so the ratio is a (close) lower bound of cond_2(K).
   double
-  condition_number_estimate(const fe::FESpace &space, const SparseMatrix &K,
+  condition_number_estimate(const fe::FESpace &space, const archdam::SparseMatrix &K,
                             const time::FactorizedOperator &K_inverse)
   {
-    Vector v, w;
+    archdam::Vector v, w;
     space.reinit(v);
     space.reinit(w);
     const auto start = [&]() {
@@ -217,9 +223,9 @@ namespace
                             "    set Width = " + std::to_string(W) + "\n"
                             "    set Height = " + std::to_string(H) + "\n"
                             "    set Number of blocks = 2\n"
-                            "    set Cells in x = 3\n"
-                            "    set Cells in y = 4\n"
-                            "    set Cells in z = 3\n"
+                            "    set Cells in x = 4\n"
+                            "    set Cells in y = 6\n"
+                            "    set Cells in z = 4\n"
                             "    set Rock depth = 0\n"
                             "  end\n"
                             "end\n"
@@ -237,7 +243,7 @@ namespace
 
     parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     geometry::create_mesh(p.mesh, tria);
-    const double h_min = std::min({L / 3, W / 4, H / 3});
+    const double h_min = std::min({L / 4, W / 6, H / 4});
     GridTools::transform([&](const Point<dim> &x) { return distort(x, 0.25 * h_min); }, tria);
 
     // The mesh is what the test claims: several material ids, boundary ids
@@ -251,10 +257,17 @@ namespace
       for (const auto &cell : tria.active_cell_iterators())
         {
           materials.insert(cell->material_id());
-          auto v = [&](unsigned int k) { return cell->vertex(k); };
-          const double twist =
-            std::max({(v(0) - v(1) - v(2) + v(3)).norm(), (v(0) - v(1) - v(4) + v(5)).norm(),
-                      (v(0) - v(2) - v(4) + v(6)).norm()});
+          // Distance of the vertices from the affine map through v0, v1, v2,
+          // v4 (zero for a parallelepiped); vertex k = i + 2 j + 4 l.
+          double twist = 0;
+          for (unsigned int k = 0; k < 8; ++k)
+            {
+              const Point<dim> affine = cell->vertex(0) +
+                                        (k & 1) * (cell->vertex(1) - cell->vertex(0)) +
+                                        ((k >> 1) & 1) * (cell->vertex(2) - cell->vertex(0)) +
+                                        ((k >> 2) & 1) * (cell->vertex(4) - cell->vertex(0));
+              twist = std::max(twist, cell->vertex(k).distance(affine));
+            }
           distorted += twist > 1e-2 * h_min;
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary())
@@ -264,7 +277,7 @@ namespace
                   double           d = std::numeric_limits<double>::max();
                   for (unsigned int c = 0; c < dim; ++c)
                     d = std::min({d, std::abs(x[c]),
-                                  std::abs(x[c] - std::array<double, 3>{L, W, H}[c])});
+                                  std::abs(x[c] - box_size(c))});
                   off_face = std::max(off_face, d);
                 }
         }
@@ -279,9 +292,9 @@ namespace
     }
 
     fe::FESpace fixed(tria, p.finite_element), free(tria, p.finite_element);
-    fixed.setup({geometry::ids::free_surface_solid, geometry::ids::foundation_bottom});
+    fixed.setup({ids::free_surface_solid, ids::foundation_bottom});
     free.setup({});
-    SparseMatrix M_c, K_c, M, K;
+    archdam::SparseMatrix M_c, K_c, M, K;
     physics::solid::assemble_mass_and_stiffness(fixed, p.materials,
                                                 physics::solid::InertiaOf::dam, M_c, K_c);
     physics::solid::assemble_mass_and_stiffness(free, p.materials,
@@ -304,7 +317,7 @@ namespace
           << ", same numbering in both spaces: " << (same ? "yes" : "NO") << std::endl;
 
     // Boundary values g and the exact nodal field.
-    Vector g, u_exact;
+    archdam::Vector g, u_exact;
     fixed.reinit(g);
     fixed.reinit(u_exact);
     for (const auto &[i, pc] : points)
@@ -316,7 +329,7 @@ namespace
     g.compress(VectorOperation::insert);
     u_exact.compress(VectorOperation::insert);
 
-    Vector rhs, x;
+    archdam::Vector rhs, x;
     fixed.reinit(rhs);
     fixed.reinit(x);
     K.vmult(rhs, g);
@@ -326,20 +339,21 @@ namespace
     time::FactorizedOperator K_c_inverse;
     K_c_inverse.factorize(K_c, true);
     K_c_inverse.solve(x, rhs);
-    Vector u = x;
+    archdam::Vector u = x;
     u += g;
 
     // Nodal values. Tolerance: the discrete solution is exact, the computed
     // one carries the round-off of a backward-stable Cholesky solve, relative
-    // error <~ c(n) cond(K) eps_mach. cond(K_c) is estimated below (about 1e4
-    // on this small mesh, larger for Q2: h^-2 scaling times the distortion and
-    // the constrained-row scaling), so the error is <~ 1e-12 and 1e-10 leaves
-    // two orders of margin while any defect of K (a wrong entry, an inexact
-    // quadrature, a wrong constraint) shows as an O(h^p) error, >= 1e-4 here.
+    // error <~ c(n) cond(K) eps_mach. cond(K_c) is estimated here (about 30
+    // for Q1 and 100 for Q2 on this mesh: few interior nodes per direction,
+    // cond ~ (L / h)^2 times the element-level spread from the distortion and
+    // nu) and checked to stay below 1e4, so the error is <~ 1e-12 even with a
+    // generous c(n); 1e-10 leaves margin above round-off (observed ~1e-15)
+    // while a field the discretization does not reproduce shows errors of
+    // order 1e-3 here (checked by adding 1e-4 y^2 to u_x: 6e-3 relative).
     const double cond = condition_number_estimate(fixed, K_c, K_c_inverse);
-    check_below("cond(K) estimate (power / inverse iteration) times machine epsilon",
-                cond * std::numeric_limits<double>::epsilon(), 1e-12);
-    Vector error = u;
+    check_below("cond(K) estimate (power / inverse iteration)", cond, 1e4);
+    archdam::Vector error = u;
     error -= u_exact;
     const double u_max = u_exact.linfty_norm();
     check_below("max nodal |u_h - (u0 + G x)| / max |u|", error.linfty_norm() / u_max, 1e-10);
@@ -359,7 +373,7 @@ namespace
       for (unsigned int j = 0; j < dim; ++j)
         G_max = std::max(G_max, std::abs(G[i][j]));
 
-    Vector u_ghosted;
+    archdam::Vector u_ghosted;
     fixed.reinit_ghosted(u_ghosted);
     u_ghosted = u;
     hp::FEValues<dim> hp_fv(fixed.fe_collection, fixed.q_collection,

@@ -17,7 +17,9 @@ namespace archdam::output
   {
     prm.add_parameter("Points", points,
                       "Named points whose histories are recorded, as "
-                      "'name: x, y, z; name: x, y, z' [m].",
+                      "'name: x, y, z; name: x, y, z' [m]. Stresses are taken "
+                      "from the cell that contains the point (on a face shared "
+                      "by two cells, from one of them).",
                       Patterns::Anything());
     prm.add_parameter("Quantities", quantities,
                       "What is recorded at each point (comma-separated): "

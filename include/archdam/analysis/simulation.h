@@ -63,9 +63,11 @@ namespace archdam::analysis
     {
       return u_static;
     }
+    /// The monitor histories of the dynamic stage (none before it ran).
     const output::HistoryWriter &
     histories() const
     {
+      AssertThrow(history, dealii::ExcMessage("There are histories only after a dynamic stage."));
       return *history;
     }
     const output::Monitors &

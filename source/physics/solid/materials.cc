@@ -38,8 +38,11 @@ namespace archdam::physics::solid
   std::pair<double, double>
   principal_stresses(const SymmetricTensor<2, dim> &stress)
   {
-    // eigenvalues() returns them in descending order.
-    const auto ev = eigenvalues(stress);
-    return {ev[0], ev[dim - 1]};
+    // The iterative QL method, not the closed form of eigenvalues(): the
+    // latter loses half the digits (acos near -1) when two principal stresses
+    // coincide, as in the uniaxial and biaxial states of free faces.
+    // The pairs come in descending order of the eigenvalue.
+    const auto ev = eigenvectors(stress, SymmetricTensorEigenvectorMethod::ql_implicit_shifts);
+    return {ev[0].first, ev[dim - 1].first};
   }
 } // namespace archdam::physics::solid
