@@ -35,7 +35,7 @@ namespace archdam::bench
     unsigned int cells_x        = 4;
     unsigned int cells_y        = 32;
     unsigned int cells_z        = 16;
-    double       rock_cell_size = 4.;
+    double       rock_cell_size = 8.;
   };
 
   inline std::string
@@ -153,18 +153,26 @@ namespace archdam::bench
   inline BoxSize
   parse_size(const std::string &s)
   {
-    if (s == "tiny")
+    if (s == "tiny") // 13,413 DOFs
       return {2, 8, 6, 10.};
-    if (s == "small") // ~28k DOFs
-      return {2, 16, 10, 6.};
-    if (s == "large") // ~1.1e5 DOFs
-      return {4, 32, 16, 4.};
+    if (s == "small") // 27,747 DOFs
+      return {2, 12, 6, 8.};
+    if (s == "large") // 110,835 DOFs
+      return {4, 32, 16, 8.};
     BoxSize            b;
     char               c1, c2, c3;
     std::istringstream in(s);
     if (!(in >> b.cells_x >> c1 >> b.cells_y >> c2 >> b.cells_z >> c3 >> b.rock_cell_size))
       throw std::runtime_error("size must be tiny|small|large or cx,cy,cz,h; got '" + s + "'");
     return b;
+  }
+
+  /// std::cout on rank 0, a sink elsewhere.
+  inline std::ostream &
+  screen()
+  {
+    static std::ostringstream sink;
+    return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0 ? std::cout : sink;
   }
 
   /// "name: value unit" lines are what the benches print; this keeps them aligned.

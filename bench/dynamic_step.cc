@@ -6,8 +6,8 @@
 //   bench_dynamic_step [--size tiny|small|large|cx,cy,cz,h] [--steps N]
 //                      [--rounds R] [--record FILE.AT2] [--dofs-only]
 //
-// Defaults: --size large (~1.1e5 DOFs), --rounds 5, --steps 8 (steps per
-// round). Step and back-substitution are timed in alternating rounds (R
+// Defaults: --size large (110,835 DOFs), --rounds 5, --steps 8 (steps per
+// round); --size small (27,747 DOFs) runs in a few seconds. Step and back-substitution are timed in alternating rounds (R
 // rounds of N steps, then N back-substitutions) so that load from other users
 // of this shared machine hits both alike.
 //
@@ -22,19 +22,26 @@
 //  - the pieces of advance() (the two matrix-vector products, the constraint
 //    zeroing, the vector updates), timed alone with the same calls, to show
 //    what dominates a step.
+//  - the set-up: mesh and DOFs, assembly of M and K (and, for comparison, the
+//    same cell loop without insertion into PETSc, and one FESpace::reinit of a
+//    matrix), the Newmark constructor (Kbar + MUMPS Cholesky factorization),
+//    and Kbar built again as the constructor does it.
 //
 // Peak memory is VmHWM of /proc/self/status. It is printed after the steps,
 // before the second factorization (the figure of a real run), and at the end.
 
 #include "bench_common.h"
 
+#include <archdam/geometry/ids.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/time/factorized_operator.h>
 #include <archdam/time/newmark.h>
 
-#include <petsclog.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
 
-#include <deal.II/base/conditional_ostream.h>
+#include <petsclog.h>
 
 #include <algorithm>
 #include <cmath>
@@ -42,7 +49,6 @@
 #include <map>
 
 using namespace archdam;
-using dealii::ConditionalOStream;
 using dealii::Tensor;
 using dealii::Timer;
 namespace Utilities = dealii::Utilities;
@@ -82,13 +88,64 @@ namespace
     PetscLogEventGetPerfInfo(0 /* main stage */, id, &info);
     return {info.time, info.count};
   }
+  // The cell loop of physics::solid::assemble_mass_and_stiffness (same code),
+  // without distribute_local_to_global: how much of the assembly time is the
+  // computation of cell matrices, how much the insertion into PETSc.
+  double
+  cell_matrices_only(const fe::FESpace &space, const physics::solid::MaterialParameters &mat_p)
+  {
+    using namespace dealii;
+    Timer             timer;
+    hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
+                                   update_values | update_gradients | update_JxW_values);
+    FullMatrix<double>                   cell_m, cell_k;
+    std::vector<SymmetricTensor<2, dim>> eps;
+    std::vector<double>                  div;
+    std::vector<Tensor<1, dim>>          phi;
+    double                               sum = 0;
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim> &fv  = hp_fe_values.get_present_fe_values();
+          const unsigned int   n   = fv.dofs_per_cell;
+          const auto          &mat = mat_p.of(cell->material_id());
+          const double         rho = ids::is_dam(cell->material_id()) ? mat.density : 0.;
+          const double         lambda = mat.lambda(), mu = mat.mu();
+          cell_m.reinit(n, n);
+          cell_k.reinit(n, n);
+          eps.resize(n);
+          div.resize(n);
+          phi.resize(n);
+          for (const unsigned int q : fv.quadrature_point_indices())
+            {
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  eps[i] = fv[space.displacement].symmetric_gradient(i, q);
+                  div[i] = fv[space.displacement].divergence(i, q);
+                  phi[i] = fv[space.displacement].value(i, q);
+                }
+              const double dx = fv.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j <= i; ++j)
+                  {
+                    cell_m(i, j) += rho * phi[i] * phi[j] * dx;
+                    cell_k(i, j) += (lambda * div[i] * div[j] + 2 * mu * eps[i] * eps[j]) * dx;
+                  }
+            }
+          sum += cell_m(0, 0) + cell_k(n - 1, 0); // keep the work observable
+        }
+    const double t = timer.wall_time();
+    AssertThrow(std::isfinite(sum), dealii::ExcInternalError());
+    return t;
+  }
 } // namespace
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  ConditionalOStream out(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+  std::ostream &out = bench::screen();
 
   std::string  size_name = "large";
   unsigned int n_steps = 8, n_rounds = 5;
@@ -138,6 +195,16 @@ main(int argc, char **argv)
   bench::figure(out, "setup: mesh + DOFs + constraints [s]") << m.time_mesh_and_dofs << nd
                                                              << std::endl;
   bench::figure(out, "setup: assembly of M and K [s]") << m.time_assembly << nd << std::endl;
+  bench::figure(out, "setup: assembly, cell matrices only (no insertion) [s]")
+    << cell_matrices_only(*m.space, m.p.materials) << nd << std::endl;
+  {
+    SparseMatrix scratch;
+    Timer        t;
+    m.space->reinit(scratch);
+    bench::figure(out, "setup: one FESpace::reinit(SparseMatrix) [s]")
+      << t.wall_time() << " (sparsity pattern + PETSc preallocation; assembly does it for M and K)"
+      << nd << std::endl;
+  }
   bench::figure(out, "setup: gravity + 3 influence loads [s]") << m.time_loads << nd
                                                                << std::endl;
 
@@ -190,9 +257,16 @@ main(int argc, char **argv)
   const double peak_model = bench::memory_gb("VmHWM");
 
   // ---------------------------------------- the same Kbar, factorized again
+  // built as NewmarkIntegrator does it (M and K share one sparsity pattern)
+  const auto  &ti = m.p.time_integration;
+  const double ck = rayleigh.second * ti.beta1 * dt + ti.beta2 * dt * dt;
+  const double cm = 1. + rayleigh.first * ti.beta1 * dt;
   SparseMatrix kbar;
   timer.restart();
-  bench::effective_matrix(m, kbar);
+  kbar.reinit(m.stiffness);
+  kbar.copy_from(m.stiffness);
+  kbar *= ck;
+  MatAXPY(kbar.petsc_matrix(), cm, m.mass, SAME_NONZERO_PATTERN);
   const double t_kbar = timer.wall_time();
   timer.restart();
   time::FactorizedOperator op;
@@ -228,7 +302,7 @@ main(int argc, char **argv)
   const double t_mv_m = per_call(n_pieces, [&] { m.mass.vmult(tmp2, tmp); });
   const double t_mv_k = per_call(n_pieces, [&] { m.stiffness.vmult(tmp2, tmp); });
   const double t_zero = per_call(n_pieces, [&] { m.space->constraints.set_zero(tmp2); });
-  // the vector work of advance(): 8 assignments (copies), 6 add/axpy, 2 -=, 1 +=
+  // the vector work of advance(): 7 assignments (copies), 6 add/axpy, 2 -=, 1 +=
   Vector       up, vp;
   m.space->reinit(up);
   m.space->reinit(vp);
@@ -266,7 +340,8 @@ main(int argc, char **argv)
 
   // ------------------------------------------------------------ report
   const double ratio = mean_step / mean_solve;
-  bench::figure(out, "setup: Kbar again (bench copy) [s]") << t_kbar << nd << std::endl;
+  out << std::defaultfloat;
+  bench::figure(out, "setup: Kbar again, as the Newmark ctor [s]") << t_kbar << nd << std::endl;
   bench::figure(out, "setup: factorization again (FactorizedOperator) [s]")
     << t_factor2 << nd << std::endl;
   bench::figure(out, "peak memory after factorization + steps [GB]")

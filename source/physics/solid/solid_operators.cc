@@ -25,8 +25,8 @@ namespace archdam::physics::solid
                               SparseMatrix             &mass,
                               SparseMatrix             &stiffness)
   {
-    space.reinit(mass);
     space.reinit(stiffness);
+    mass.reinit(stiffness); // the same pattern: Kbar = c1 M + c2 K relies on it
 
     hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
                                    update_values | update_gradients | update_JxW_values);
