@@ -39,14 +39,23 @@ subsection Static loads
 end
 )";
 
+  /// E = 1/2 v^T M v + 1/2 u^T K u. M and K are condensed (constrained rows
+  /// and columns replaced by a diagonal): with the constrained entries of u and
+  /// v set to zero the products are those of the full matrices on the
+  /// constrained fields (u = C u_free: C^T M C), as the energy needs.
   double
-  energy(const archdam::SparseMatrix &M, const archdam::SparseMatrix &K, const time::NewmarkState &s,
+  energy(const archdam::SparseMatrix &M, const archdam::SparseMatrix &K,
+         const AffineConstraints<double> &constraints, const time::NewmarkState &s,
          archdam::Vector &tmp)
   {
-    M.vmult(tmp, s.v);
-    const double kinetic = 0.5 * (tmp * s.v);
-    K.vmult(tmp, s.u);
-    return kinetic + 0.5 * (tmp * s.u);
+    archdam::Vector free = s.v;
+    constraints.set_zero(free);
+    M.vmult(tmp, free);
+    const double kinetic = 0.5 * (tmp * free);
+    free = s.u;
+    constraints.set_zero(free);
+    K.vmult(tmp, free);
+    return kinetic + 0.5 * (tmp * free);
   }
 } // namespace
 
@@ -71,12 +80,14 @@ main(int argc, char **argv)
   time::FactorizedOperator solver;
   solver.factorize(K, true);
   solver.solve(u0, f);
+  sim.space().constraints.distribute(u0); // the glued joint's side 2 follows side 1
   K.vmult(tmp, u0);
   tmp *= -1.;
   sim.space().constraints.set_zero(tmp);
   time::FactorizedOperator mass_solver;
   mass_solver.factorize(M, true);
   mass_solver.solve(a0, tmp);
+  sim.space().constraints.distribute(a0);
 
   const double T1_estimate = 0.05; // s, the order of the first period here
   const double dt          = T1_estimate / 40;
@@ -104,7 +115,7 @@ main(int argc, char **argv)
       s.u = u0;
       s.a = a0;
 
-      const double E0       = energy(M, K, s, tmp);
+      const double E0       = energy(M, K, sim.space().constraints, s, tmp);
       double       E        = E0;
       double       worst    = 0.; // largest violation of the identity, relative to E0
       bool         monotone = true;
@@ -114,13 +125,14 @@ main(int argc, char **argv)
           newmark.advance(zero, s);
           vbar += s.v;
           vbar *= 0.5;
+          sim.space().constraints.set_zero(vbar); // as in energy()
           // dissipation dt vbar^T (alpha M + beta K) vbar
           M.vmult(tmp, vbar);
           double dissipated = c.alpha * (tmp * vbar);
           K.vmult(tmp, vbar);
           dissipated = dt * (dissipated + c.beta * (tmp * vbar));
 
-          const double E_next = energy(M, K, s, tmp);
+          const double E_next = energy(M, K, sim.space().constraints, s, tmp);
           monotone            = monotone && E_next < E;
           if (c.beta1 == 0.5)
             worst = std::max(worst, std::abs(E_next - E + dissipated) / E0);

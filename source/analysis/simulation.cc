@@ -54,8 +54,12 @@ namespace archdam::analysis
   {
     TimerOutput::Scope t(timer, "setup");
     geometry::create_mesh(p.mesh, triangulation);
-    fe_space = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
-    fe_space->setup(p.foundation.fixed_boundaries());
+    joint_faces = joints::pair_joint_faces(triangulation);
+    fe_space    = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
+    fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {
+      // Contraction joints/Model = glued: the monolithic dam.
+      joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant, c);
+    });
 
     unsigned int n_dam = 0, n_rock = 0;
     for (const auto &cell : triangulation.active_cell_iterators())

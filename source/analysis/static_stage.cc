@@ -20,6 +20,7 @@ namespace archdam::analysis
       Vector rhs = static_load;
       fe_space->constraints.set_zero(rhs);
       stiffness_factor.solve(u_static, rhs);
+      fe_space->constraints.distribute(u_static);
       current.u = u_static;
     }
 

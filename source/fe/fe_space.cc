@@ -38,7 +38,8 @@ namespace archdam::fe
   }
 
   void
-  FESpace::setup(const std::set<types::boundary_id> &fixed_boundaries)
+  FESpace::setup(const std::set<types::boundary_id>                   &fixed_boundaries,
+                 const std::function<void(AffineConstraints<double> &)> &add_constraints)
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -57,15 +58,25 @@ namespace archdam::fe
       fixed[id] = &zero;
     VectorTools::interpolate_boundary_values(dof_handler, fixed, constraints,
                                              fe_collection.component_mask(displacement));
+    if (add_constraints)
+      add_constraints(constraints);
     constraints.close();
   }
 
   void
   FESpace::reinit(SparseMatrix &matrix) const
   {
-    DynamicSparsityPattern dsp(locally_relevant);
+    // Rows this rank writes: its relevant DOFs and the DOFs they are
+    // constrained to (a tied joint DOF may point to a cell this rank does not
+    // see as ghost).
+    IndexSet rows = locally_relevant;
+    for (const auto &line : constraints.get_lines())
+      for (const auto &entry : line.entries)
+        rows.add_index(entry.first);
+    rows.compress();
+    DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned, comm, locally_relevant);
+    SparsityTools::distribute_sparsity_pattern(dsp, locally_owned, comm, rows);
     matrix.reinit(locally_owned, locally_owned, dsp, comm);
   }
 

@@ -1,6 +1,7 @@
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>
+#include <archdam/geometry/splitter.h>
 
 namespace archdam::geometry
 {
@@ -28,6 +29,8 @@ namespace archdam::geometry
     if (n_dam_cells == 0)
       throw InputError("Mesh: the mesh has no dam cells (material id 10 + k).");
 
-    tria.copy_triangulation(serial);
+    Triangulation<dim> split;
+    split_interfaces(serial, split);
+    tria.copy_triangulation(split);
   }
 } // namespace archdam::geometry

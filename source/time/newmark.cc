@@ -88,6 +88,7 @@ namespace archdam::time
     constraints.set_zero(rhs);
 
     effective_operator.solve(da, rhs);
+    constraints.distribute(da); // constrained DOFs follow their masters
 
     // correctors (eq. 2.2)
     s.u = up;

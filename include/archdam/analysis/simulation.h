@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/joints/joint_faces.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/histories.h>
@@ -98,6 +99,7 @@ namespace archdam::analysis
     dealii::ConditionalOStream               screen;
     dealii::TimerOutput                      timer;
     dealii::parallel::shared::Triangulation<dim> triangulation;
+    std::vector<joints::JointFacePair>       joint_faces;
     std::unique_ptr<fe::FESpace>             fe_space;
     std::unique_ptr<loads::GroundMotion>     ground_motion;
     SparseMatrix                             mass_matrix, stiffness_matrix;

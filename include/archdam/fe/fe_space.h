@@ -11,6 +11,7 @@
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <functional>
 #include <set>
 
 namespace archdam::fe
@@ -42,10 +43,12 @@ namespace archdam::fe
     FESpace(const dealii::parallel::shared::Triangulation<dim> &tria,
             const FiniteElementParameters                    &p);
 
-    /// Distribute DOFs and fix the displacement on the given boundary ids
-    /// (homogeneous constraints: the unknowns of a step are increments).
+    /// Distribute DOFs, fix the displacement on the given boundary ids
+    /// (homogeneous constraints: the unknowns of a step are increments) and
+    /// let @p add_constraints add further homogeneous ones (e.g. glued joints).
     void
-    setup(const std::set<dealii::types::boundary_id> &fixed_boundaries);
+    setup(const std::set<dealii::types::boundary_id>                   &fixed_boundaries,
+          const std::function<void(dealii::AffineConstraints<double> &)> &add_constraints = {});
 
     void
     reinit(SparseMatrix &matrix) const;

@@ -20,8 +20,9 @@ namespace archdam::geometry
 
   /**
    * Build the model mesh on every rank (a parallel::shared::Triangulation holds
-   * the whole mesh everywhere and partitions the cells) and check that it
-   * carries the ids the physics needs.
+   * the whole mesh everywhere and partitions the cells): generate or read the
+   * conforming mesh, check that it carries the ids the physics needs, and
+   * split joints and fluid-solid interfaces (splitter.h).
    */
   void
   create_mesh(const MeshParameters                          &p,

@@ -3,6 +3,7 @@
 #include <archdam/analysis/analysis_parameters.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/geometry/mesh.h>
+#include <archdam/joints/joint_parameters.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/loads/static_loads.h>
 #include <archdam/output/field_writer.h>
@@ -33,6 +34,7 @@ namespace archdam
     physics::solid::DampingParameters        damping;
     time::NewmarkParameters                  time_integration;
     physics::foundation::FoundationParameters foundation;
+    joints::JointParameters                  joints;
     loads::GroundMotionParameters            ground_motion;
     loads::StaticLoadParameters              static_loads;
     analysis::AnalysisParameters             analysis;
