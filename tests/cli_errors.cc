@@ -11,10 +11,15 @@
 
 namespace
 {
+  // Rank 0 writes the input files; the others wait for them (two ranks
+  // writing one file while the other reads it would give them different
+  // cases).
   void
   write(const std::string &name, const std::string &text)
   {
-    std::ofstream(name) << text;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(name) << text;
+    MPI_Barrier(MPI_COMM_WORLD);
   }
 
   void
