@@ -53,7 +53,8 @@ namespace archdam::analysis
   Simulation::setup_model()
   {
     TimerOutput::Scope t(timer, "setup");
-    geometry::create_mesh(p.mesh, triangulation);
+    // The reservoir is empty until the water physics exists (numerics.md §4).
+    geometry::create_mesh(p.mesh, triangulation, false);
     joint_faces = joints::pair_joint_faces(triangulation);
     fe_space    = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
     fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {

@@ -1,5 +1,8 @@
 #include <archdam/analysis/simulation.h>
+#include <archdam/base/input_error.h>
 #include <archdam/time/factorized_operator.h>
+
+#include <cmath>
 
 namespace archdam::analysis
 {
@@ -25,6 +28,9 @@ namespace archdam::analysis
     }
 
     const double max_u = u_static.linfty_norm();
+    if (!std::isfinite(max_u))
+      throw InputError("Static stage: the displacement is not finite; the model is "
+                       "singular (is every part of it supported?).");
     screen << "Static stage: max |u_i| = " << std::setprecision(4) << max_u << " m"
            << std::endl;
     summary.set("static/max nodal displacement component [m]", max_u);

@@ -116,8 +116,12 @@ namespace archdam::geometry
           cell->set_material_id(ids::rock);
         else
           {
-            const auto k = std::min<unsigned int>(
-              static_cast<unsigned int>(c[1] / p.width * p.n_blocks), p.n_blocks - 1);
+            // Blocks are numbered left to right looking downstream (+x), i.e.
+            // from +y to -y (architecture.md §3).
+            const auto k = p.n_blocks - 1 -
+                           std::min<unsigned int>(
+                             static_cast<unsigned int>(c[1] / p.width * p.n_blocks),
+                             p.n_blocks - 1);
             cell->set_material_id(ids::first_dam_block + k);
           }
 

@@ -9,7 +9,8 @@ namespace archdam::geometry
 {
   /**
    * A box-shaped "dam on rock": a concrete block [0, L] x [0, W] x [0, H]
-   * (x stream, y cross-stream, z up) split into cantilever blocks along y,
+   * (x stream, y cross-stream, z up) split into cantilever blocks along y
+   * (block 0 at the largest y: left looking downstream),
    * standing on a rock block that extends beyond it upstream, downstream, to the
    * sides and below. With no rock (depth 0) the dam base is the foundation
    * bottom (boundary id 1) and is fixed.

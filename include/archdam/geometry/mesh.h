@@ -1,5 +1,6 @@
 #pragma once
 
+#include <archdam/geometry/arch_dam.h>
 #include <archdam/geometry/box_mesh.h>
 
 #include <deal.II/distributed/shared_tria.h>
@@ -11,8 +12,9 @@ namespace archdam::geometry
   /// The `Mesh` subsection: where the model's mesh comes from.
   struct MeshParameters
   {
-    std::string   source = "box";
-    BoxParameters box;
+    std::string       source = "box";
+    BoxParameters     box;
+    ArchDamParameters arch_dam;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
@@ -22,9 +24,12 @@ namespace archdam::geometry
    * Build the model mesh on every rank (a parallel::shared::Triangulation holds
    * the whole mesh everywhere and partitions the cells): generate or read the
    * conforming mesh, check that it carries the ids the physics needs, and
-   * split joints and fluid-solid interfaces (splitter.h).
+   * split joints and fluid-solid interfaces (splitter.h). Without
+   * @p keep_water the water cells are left out (empty reservoir); the solid
+   * faces they covered become traction-free (id 0).
    */
   void
   create_mesh(const MeshParameters                          &p,
-              dealii::parallel::shared::Triangulation<dim> &tria);
+              dealii::parallel::shared::Triangulation<dim> &tria,
+              bool                                          keep_water = true);
 } // namespace archdam::geometry

@@ -1,0 +1,834 @@
+// Parametric double-curvature arch dam in its canyon, with foundation rock and
+// reservoir (doc/arch-dam-geometry.md gives every formula and default).
+//
+// The mesh is a structured grid in index space (i across the valley from
+// y = +Y to y = -Y, k along the stream from the upstream end to the downstream
+// end, j up from the foundation bottom to the crest level), mapped to physical
+// space elevation by elevation:
+//   - the grid levels j are horizontal planes z = z_j: the rock layers below the
+//     dam base, then uniform layers from the base to the water level and from
+//     the water level to the crest;
+//   - at each elevation the plan (i, k) grid follows the arch: through the dam
+//     the lines of constant i are the radial lines phi = u phi_a(z) and the
+//     lines of constant k the arcs s = const; beside the abutments the arcs
+//     continue as lines parallel to y out to the lateral truncation; upstream
+//     and downstream of the dam the lines of constant i are straight lines from
+//     the dam faces to the truncation planes, with the planes x = const of the
+//     truncations as lines of constant k;
+// and the cells that are neither dam, rock nor water (air in the canyon
+// downstream and above the reservoir, and what lies beyond the rock's or the
+// reservoir's extent) are left out. Joints are the radial grid surfaces
+// u = u_k between blocks; every vertex is shared (the splitter duplicates
+// joint and fluid-solid vertices later).
+
+#include <archdam/base/input_error.h>
+#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/ids.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_accessor.h>
+#include <deal.II/grid/tria_iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace archdam::geometry
+{
+  using namespace dealii;
+
+  void
+  ArchDamParameters::add_parameters(ParameterHandler &prm)
+  {
+    const auto positive = Patterns::Double(0., Patterns::Double::max_double_value);
+    const auto nonneg   = Patterns::Double(0.);
+
+    prm.add_parameter("Height", height,
+                      "Dam height H [m]: the crest's elevation above the dam base "
+                      "(z = 0, the lowest point of the crown cantilever).",
+                      positive);
+    prm.add_parameter("Crest length", crest_length,
+                      "Arc length of the crest arch [m], measured along its "
+                      "mid-thickness line from abutment to abutment.",
+                      positive);
+    prm.add_parameter("Crown thickness at crest", crown_thickness_crest,
+                      "Thickness of the crown cantilever at the crest [m].", positive);
+    prm.add_parameter("Crown thickness at base", crown_thickness_base,
+                      "Thickness of the crown cantilever at the base [m]; it varies "
+                      "linearly with elevation in between.",
+                      positive);
+    prm.add_parameter("Upstream overhang", upstream_overhang,
+                      "How far the crown cantilever's upstream face bulges upstream "
+                      "at mid-height [m], beyond the line from the heel to the crest "
+                      "(its face is a parabola in z).",
+                      Patterns::Double());
+    prm.add_parameter("Crest setback", crest_setback,
+                      "Horizontal distance from the heel to the crest's upstream "
+                      "edge [m], positive downstream.",
+                      Patterns::Double());
+    prm.add_parameter("Arch radius at crest", arch_radius_crest,
+                      "Radius of the crest arch's mid-thickness line [m]; the "
+                      "radius varies linearly with elevation.",
+                      positive);
+    prm.add_parameter("Arch radius at base", arch_radius_base,
+                      "Radius of the base arch's mid-thickness line [m].", positive);
+    prm.add_parameter("Abutment thickening at crest", abutment_thickening_crest,
+                      "Thickness of the crest arch at the abutments divided by its "
+                      "crown thickness [-]; along an arch the thickness grows with "
+                      "the square of the arch angle.",
+                      Patterns::Double(0.5, 5.));
+    prm.add_parameter("Abutment thickening at base", abutment_thickening_base,
+                      "The same ratio for the base arch [-]; it varies linearly "
+                      "with elevation in between.",
+                      Patterns::Double(0.5, 5.));
+    prm.add_parameter("Canyon width at base", canyon_width_base,
+                      "Width of the canyon at the dam base [m], where the arch's "
+                      "mid-thickness line meets the canyon walls. At the crest the "
+                      "width follows from the crest length and radius.",
+                      positive);
+    prm.add_parameter("Canyon shape exponent", canyon_shape_exponent,
+                      "m in the canyon's half-width b(z) = b0 + (bH - b0) (z/H)^m: "
+                      "1 = straight walls, below 1 = U-shaped, above 1 = gorge "
+                      "opening near the top [-].",
+                      Patterns::Double(0.1, 10.));
+    prm.add_parameter("Number of blocks", n_blocks,
+                      "Cantilever blocks between radial contraction joints; block k "
+                      "(material id 10+k) counts from the left bank looking "
+                      "downstream (+y).",
+                      Patterns::Integer(1, 89));
+    prm.add_parameter("Cells across each block", cells_across_block,
+                      "Cells along the arch in each block.", Patterns::Integer(1, 100));
+    prm.add_parameter("Cells through thickness", cells_through,
+                      "Cells through the dam thickness.", Patterns::Integer(1, 100));
+    prm.add_parameter("Cells over height", cells_over_height,
+                      "Cell layers from the dam base to the crest; one layer "
+                      "boundary lies at the water level.",
+                      Patterns::Integer(1, 1000));
+    prm.add_parameter("Foundation depth", foundation_depth,
+                      "Depth of the rock below the dam base, in dam heights [-]; "
+                      "0 = no rock: the dam's base and abutments are then fixed "
+                      "(boundary id 1).",
+                      nonneg);
+    prm.add_parameter("Foundation extent upstream", foundation_upstream,
+                      "Rock extent upstream of the heel of the crown cantilever, in "
+                      "dam heights [-].",
+                      positive);
+    prm.add_parameter("Foundation extent downstream", foundation_downstream,
+                      "Rock extent downstream of the toe of the crown cantilever, in "
+                      "dam heights [-].",
+                      positive);
+    prm.add_parameter("Foundation extent to the sides", foundation_sides,
+                      "Rock extent beyond the canyon's half-width at the crest, on "
+                      "each side, in dam heights [-].",
+                      positive);
+    prm.add_parameter("Rock cell size", rock_cell_size,
+                      "Largest rock cell edge away from the dam [m]; cells grow by "
+                      "at most 1.5 from the dam outwards. 10 Hz with 8 nodes per "
+                      "shear wavelength and quadratic elements needs "
+                      "c_s / (10 Hz) / 4 (45 m for the default rock).",
+                      positive);
+    prm.add_parameter("Water level", water_level,
+                      "Reservoir level above the dam base [m]; 0 = empty reservoir "
+                      "(no water cells).",
+                      nonneg);
+    prm.add_parameter("Reservoir length", reservoir_length,
+                      "Length of the reservoir upstream of the heel, in multiples of "
+                      "the water depth [-].",
+                      positive);
+    prm.add_parameter("Water cell size", water_cell_size,
+                      "Largest water cell edge [m]; 10 Hz with 8 nodes per acoustic "
+                      "wavelength and quadratic elements needs c / (10 Hz) / 4 "
+                      "(36 m for c = 1440 m/s).",
+                      positive);
+  }
+
+  namespace
+  {
+    std::string
+    str(const double v)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << v;
+      return s.str();
+    }
+
+    [[noreturn]] void
+    fail(const std::string &what)
+    {
+      throw InputError("Mesh/Arch dam: " + what);
+    }
+  } // namespace
+
+  // ------------------------------------------------------------------------
+  // The geometry
+  // ------------------------------------------------------------------------
+
+  ArchDamGeometry::ArchDamGeometry(const ArchDamParameters &p)
+    : prm(p)
+    , crest_half_width(0.)
+  {
+    const double H = p.height;
+    if (!(H > 0) || !(p.crest_length > 0) || !(p.crown_thickness_crest > 0) ||
+        !(p.crown_thickness_base > 0) || !(p.arch_radius_crest > 0) ||
+        !(p.arch_radius_base > 0) || !(p.canyon_width_base > 0))
+      fail("Height, Crest length, crown thicknesses, arch radii and Canyon width at "
+           "base must be positive.");
+    if (p.n_blocks < 1 || p.cells_across_block < 1 || p.cells_through < 1 ||
+        p.cells_over_height < 1)
+      fail("the numbers of blocks and cells must be at least 1.");
+    const double half_angle = p.crest_length / (2 * p.arch_radius_crest);
+    if (half_angle >= 0.5 * M_PI * 0.95)
+      fail("the crest arch spans " + str(2 * half_angle * 180 / M_PI) +
+           " degrees (Crest length / Arch radius at crest); it must stay below 171.");
+    crest_half_width = p.arch_radius_crest * std::sin(half_angle);
+    if (p.water_level < 0 || p.water_level > H)
+      fail("Water level (" + str(p.water_level) + " m) must lie between 0 and Height (" +
+           str(H) + " m).");
+
+    // The arch at every elevation: the canyon must be narrower than the arch's
+    // diameter (the mid-thickness line meets the wall), and the downstream face
+    // radius must stay positive.
+    for (unsigned int n = 0; n <= 1000; ++n)
+      {
+        const double z = H * n / 1000.;
+        const double b = canyon_half_width(z);
+        const double R = arch_radius(z);
+        if (!(b < 0.99 * R))
+          fail("at elevation " + str(z) + " m the canyon half-width (" + str(b) +
+               " m) is not below the arch radius (" + str(R) +
+               " m): the arch cannot reach the canyon walls. Increase the arch radii "
+               "or narrow the canyon.");
+        if (!(R - 0.5 * arch_thickness(1., z) > 0.05 * R))
+          fail("at elevation " + str(z) + " m the arch (radius " + str(R) +
+               " m) is too thick at the abutments (" + str(arch_thickness(1., z)) +
+               " m): its downstream face would pass the arch centre. Reduce the "
+               "abutment thickening or the crown thickness, or increase the arch radius.");
+      }
+
+    if (has_rock())
+      {
+        // The dam must lie inside the rock block.
+        for (unsigned int n = 0; n <= 100; ++n)
+          for (const double u : {-1., 0., 1.})
+            for (const double s : {0., 1.})
+              {
+                const Point<3>    q = dam_point(u, s, H * n / 100.);
+                const std::string where =
+                  !(q[0] > rock_upstream_x())   ? "upstream" :
+                  !(q[0] < rock_downstream_x()) ? "downstream" :
+                  !(std::abs(q[1]) < rock_side_y()) ? "to the sides" : "";
+                if (!where.empty())
+                  fail("the dam reaches beyond the foundation block at (" + str(q[0]) + ", " +
+                       str(q[1]) + ", " + str(q[2]) + ") m; increase Foundation extent " +
+                       where + ".");
+              }
+      }
+    if (has_water())
+      for (unsigned int n = 0; n <= 100; ++n)
+        if (!(crown_upstream_face(p.water_level * n / 100.) > reservoir_end_x()))
+          fail("the reservoir is shorter than the dam's upstream overhang; increase "
+               "Reservoir length.");
+  }
+
+  double
+  ArchDamGeometry::crown_upstream_face(const double z) const
+  {
+    const double zeta = z / prm.height;
+    return prm.crest_setback * zeta - 4 * prm.upstream_overhang * zeta * (1 - zeta);
+  }
+
+  double
+  ArchDamGeometry::crown_thickness(const double z) const
+  {
+    const double zeta = z / prm.height;
+    return prm.crown_thickness_base +
+           (prm.crown_thickness_crest - prm.crown_thickness_base) * zeta;
+  }
+
+  double
+  ArchDamGeometry::crown_downstream_face(const double z) const
+  {
+    return crown_upstream_face(z) + crown_thickness(z);
+  }
+
+  double
+  ArchDamGeometry::arch_radius(const double z) const
+  {
+    const double zeta = z / prm.height;
+    return prm.arch_radius_base + (prm.arch_radius_crest - prm.arch_radius_base) * zeta;
+  }
+
+  double
+  ArchDamGeometry::arch_center_x(const double z) const
+  {
+    return crown_upstream_face(z) + 0.5 * crown_thickness(z) + arch_radius(z);
+  }
+
+  double
+  ArchDamGeometry::canyon_half_width(const double z) const
+  {
+    const double zeta = std::min(std::max(z / prm.height, 0.), 1.);
+    const double b0   = 0.5 * prm.canyon_width_base;
+    return b0 + (crest_half_width - b0) * std::pow(zeta, prm.canyon_shape_exponent);
+  }
+
+  double
+  ArchDamGeometry::abutment_angle(const double z) const
+  {
+    return std::asin(canyon_half_width(z) / arch_radius(z));
+  }
+
+  double
+  ArchDamGeometry::abutment_thickening(const double z) const
+  {
+    const double zeta = z / prm.height;
+    return prm.abutment_thickening_base +
+           (prm.abutment_thickening_crest - prm.abutment_thickening_base) * zeta;
+  }
+
+  double
+  ArchDamGeometry::arch_thickness(const double u, const double z) const
+  {
+    return crown_thickness(z) * (1 + (abutment_thickening(z) - 1) * u * u);
+  }
+
+  Point<3>
+  ArchDamGeometry::dam_point(const double u, const double s, const double z) const
+  {
+    const double phi = u * abutment_angle(z);
+    const double r   = arch_radius(z) + arch_thickness(u, z) * (0.5 - s);
+    return Point<3>(arch_center_x(z) - r * std::cos(phi), r * std::sin(phi), z);
+  }
+
+  double
+  ArchDamGeometry::arch_angle(const Point<3> &p) const
+  {
+    const double z = std::min(std::max(p[2], 0.), prm.height);
+    return std::atan2(p[1], arch_center_x(z) - p[0]);
+  }
+
+  double
+  ArchDamGeometry::joint_u(const unsigned int k) const
+  {
+    return 1. - 2. * (k + 1) / prm.n_blocks;
+  }
+
+  double
+  ArchDamGeometry::dam_section_area(const double z) const
+  {
+    // Ring area: integral over phi of (r_u^2 - r_d^2)/2 = R T(u) (r_u + r_d = 2R),
+    // with d phi = phi_a du and the mean of 1 + (kappa-1) u^2 over [-1,1].
+    return 2 * arch_radius(z) * crown_thickness(z) * abutment_angle(z) *
+           (1 + (abutment_thickening(z) - 1) / 3.);
+  }
+
+  double
+  ArchDamGeometry::rock_bottom() const
+  {
+    return -prm.foundation_depth * prm.height;
+  }
+
+  double
+  ArchDamGeometry::rock_upstream_x() const
+  {
+    return crown_upstream_face(0.) - prm.foundation_upstream * prm.height;
+  }
+
+  double
+  ArchDamGeometry::rock_downstream_x() const
+  {
+    return crown_downstream_face(0.) + prm.foundation_downstream * prm.height;
+  }
+
+  double
+  ArchDamGeometry::rock_side_y() const
+  {
+    return crest_half_width + prm.foundation_sides * prm.height;
+  }
+
+  double
+  ArchDamGeometry::reservoir_end_x() const
+  {
+    return crown_upstream_face(0.) - prm.reservoir_length * prm.water_level;
+  }
+
+  double
+  ArchDamGeometry::model_upstream_x() const
+  {
+    if (!has_rock())
+      return reservoir_end_x();
+    if (!has_water())
+      return rock_upstream_x();
+    return std::min(rock_upstream_x(), reservoir_end_x());
+  }
+
+  Point<3>
+  ArchDamGeometry::upstream_canyon_wall(const int side, const double x, const double z) const
+  {
+    const Point<3> a  = dam_point(side > 0 ? 1. : -1., 0., z);
+    const double   xe = model_upstream_x();
+    const double   ye = (side > 0 ? 1. : -1.) * canyon_half_width(z);
+    return Point<3>(x, a[1] + (ye - a[1]) * (x - a[0]) / (xe - a[0]), z);
+  }
+
+  Point<3>
+  ArchDamGeometry::downstream_canyon_wall(const int side, const double x, const double z) const
+  {
+    const Point<3> a  = dam_point(side > 0 ? 1. : -1., 1., z);
+    const double   xe = rock_downstream_x();
+    const double   ye = (side > 0 ? 1. : -1.) * canyon_half_width(z);
+    return Point<3>(x, a[1] + (ye - a[1]) * (x - a[0]) / (xe - a[0]), z);
+  }
+
+  // ------------------------------------------------------------------------
+  // The mesh
+  // ------------------------------------------------------------------------
+
+  namespace
+  {
+    /// Cells grow by at most this factor from one to the next away from the dam.
+    constexpr double growth = 1.5;
+
+    /**
+     * Node fractions 0 = f_0 < ... < f_n = 1 of a segment of length @p L whose
+     * cells start at about @p h0 at f = 0 and grow by @p growth up to @p hmax:
+     * the capped geometric sequence is extended until it covers L and then
+     * scaled to fit (with one cell fewer if that scales less), so that no cell
+     * exceeds hmax on a segment of length L or shorter.
+     */
+    std::vector<double>
+    graded_fractions(const double L, double h0, const double hmax)
+    {
+      if (!(L > 0))
+        return {0.};
+      h0 = std::min(h0, hmax);
+      std::vector<double> sizes;
+      double              total = 0, h = h0;
+      while (total < L * (1 - 1e-12))
+        {
+          sizes.push_back(std::min(h, hmax));
+          total += sizes.back();
+          h *= growth;
+        }
+      if (sizes.size() > 1)
+        {
+          const double shorter = total - sizes.back();
+          const double max_sh  = *std::max_element(sizes.begin(), sizes.end() - 1);
+          if (L / shorter - 1 < 1 - L / total && max_sh * L / shorter <= hmax)
+            {
+              sizes.pop_back();
+              total = shorter;
+            }
+        }
+      std::vector<double> f(1, 0.);
+      double              sum = 0;
+      for (const double s : sizes)
+        {
+          sum += s;
+          f.push_back(sum / total);
+        }
+      f.back() = 1.;
+      return f;
+    }
+
+    enum class Region
+    {
+      dam,
+      rock,
+      water,
+      air,     // inside the model's box, not meshed
+      outside, // beyond the rock's or the reservoir's extent
+      none     // beyond the index grid
+    };
+
+    /// One node line across the valley: in the canyon (u) or beside it
+    /// (side = +1 at +y, -1 at -y; tau = 0 at the abutment, 1 at |y| = Y).
+    struct Column
+    {
+      bool   canyon;
+      double u;
+      int    side;
+      double tau;
+    };
+
+    /// One node position along the stream.
+    struct StreamNode
+    {
+      enum Kind
+      {
+        up_far,  // x = x_far + (x_near - x_far) f
+        up_near, // x = x_near + (x_face - x_near) f
+        dam,     // s = f
+        down     // x = x_face + (x_end - x_face) f
+      } kind;
+      double f;
+    };
+
+    struct Layout
+    {
+      std::vector<Column>     across;
+      std::vector<StreamNode> stream;
+      std::vector<double>     levels; // z of the node levels
+      unsigned int            i0, i1; // canyon cells: i0 <= i < i1
+      unsigned int            k0, k1; // dam cells: k0 <= k < k1
+      unsigned int            k_rock; // rock cells: k_rock <= k (when rock exists)
+      unsigned int            k_water; // water cells: k_water <= k < k0
+      unsigned int            j0;      // first cell layer above z = 0
+      unsigned int            j_water; // first layer above the water level
+      double                  x_far, x_near, x_down, y_side;
+    };
+
+    class Mapper
+    {
+    public:
+      Mapper(const ArchDamGeometry &g, const Layout &l)
+        : g(g)
+        , l(l)
+      {}
+
+      /// Plan point of column c on the dam band (s in [0,1]) at elevation zz >= 0.
+      Point<2>
+      band(const Column &c, const double s, const double zz) const
+      {
+        if (c.canyon)
+          {
+            const Point<3> q = g.dam_point(c.u, s, zz);
+            return {q[0], q[1]};
+          }
+        const Point<3> a = g.dam_point(c.side, s, zz);
+        return {a[0], a[1] + c.tau * (c.side * l.y_side - a[1])};
+      }
+
+      /// y of column c at the upstream and downstream truncations.
+      double
+      end_y(const Column &c, const double zz) const
+      {
+        const double b = g.canyon_half_width(zz);
+        return c.canyon ? c.u * b : c.side * (b + c.tau * (l.y_side - b));
+      }
+
+      /// The point at abscissa x on the straight line from s to (x_end, y_end).
+      static Point<2>
+      on_line(const Point<2> &s, const double x_end, const double y_end, const double x)
+      {
+        return {x, s[1] + (y_end - s[1]) * (x - s[0]) / (x_end - s[0])};
+      }
+
+      Point<3>
+      operator()(const unsigned int i, const unsigned int k, const unsigned int j) const
+      {
+        const double      z  = l.levels[j];
+        const double      zz = std::min(std::max(z, 0.), g.height());
+        const Column     &c  = l.across[i];
+        const StreamNode &n  = l.stream[k];
+        Point<2>          p;
+        switch (n.kind)
+          {
+            case StreamNode::dam:
+              p = band(c, n.f, zz);
+              break;
+            case StreamNode::up_near:
+            case StreamNode::up_far:
+              {
+                const Point<2> s = band(c, 0., zz);
+                const double   x = n.kind == StreamNode::up_near ?
+                                     l.x_near + (s[0] - l.x_near) * n.f :
+                                     l.x_far + (l.x_near - l.x_far) * n.f;
+                p = on_line(s, l.x_far, end_y(c, zz), x);
+                break;
+              }
+            case StreamNode::down:
+              {
+                const Point<2> s = band(c, 1., zz);
+                p = on_line(s, l.x_down, end_y(c, zz), s[0] + (l.x_down - s[0]) * n.f);
+                break;
+              }
+          }
+        return {p[0], p[1], z};
+      }
+
+    private:
+      const ArchDamGeometry &g;
+      const Layout          &l;
+    };
+
+    Layout
+    make_layout(const ArchDamGeometry &g)
+    {
+      const ArchDamParameters &p    = g.parameters();
+      const double             H    = p.height;
+      const bool               rock = g.has_rock(), water = g.has_water();
+      Layout                   l;
+      l.y_side = rock ? g.rock_side_y() : 0.;
+      l.x_down = rock ? g.rock_downstream_x() : 0.;
+
+      // --- vertical levels: rock (graded), below water, above water ---
+      const unsigned int nz = p.cells_over_height;
+      unsigned int       n_air, n_wet;
+      if (!water)
+        n_air = nz, n_wet = 0;
+      else if (p.water_level >= H)
+        n_air = 0, n_wet = nz;
+      else
+        {
+          n_air = std::max(1u, static_cast<unsigned int>(
+                                 std::ceil(nz * (H - p.water_level) / H - 1e-9)));
+          if (n_air >= nz)
+            fail("Cells over height (" + std::to_string(nz) +
+                 ") is too small to put a layer boundary at the water level; use at "
+                 "least 2.");
+          n_wet = nz - n_air;
+        }
+      const double h_bottom_layer = n_wet > 0 ? p.water_level / n_wet : H / nz;
+      if (rock)
+        {
+          const auto f = graded_fractions(-g.rock_bottom(), h_bottom_layer, p.rock_cell_size);
+          for (auto it = f.rbegin(); it != f.rend(); ++it)
+            l.levels.push_back(*it * g.rock_bottom());
+          l.levels.back() = 0.;
+        }
+      else
+        l.levels.push_back(0.);
+      l.j0 = l.levels.size() - 1;
+      for (unsigned int n = 1; n <= n_wet; ++n)
+        l.levels.push_back(p.water_level * n / n_wet);
+      l.j_water = l.levels.size() - 1;
+      for (unsigned int n = 1; n <= n_air; ++n)
+        l.levels.push_back(p.water_level + (H - p.water_level) * n / n_air);
+      l.levels.back() = H;
+      std::vector<double> dam_levels; // z >= 0 levels (the plan map at z < 0 is the one at 0)
+      for (const double z : l.levels)
+        if (z >= 0)
+          dam_levels.push_back(z);
+
+      // --- across the valley: side (+y), canyon, side (-y) ---
+      const unsigned int n_canyon = p.n_blocks * p.cells_across_block;
+      std::vector<double> tau{0.};
+      if (rock)
+        {
+          double L = 0;
+          for (const double z : dam_levels)
+            for (const double s : {0., 1.})
+              L = std::max(L, l.y_side - g.dam_point(1., s, z)[1]);
+          tau = graded_fractions(L, p.crest_length / n_canyon, p.rock_cell_size);
+        }
+      for (unsigned int n = tau.size() - 1; n > 0; --n)
+        l.across.push_back({false, 1., +1, tau[n]});
+      l.i0 = l.across.size();
+      for (unsigned int n = 0; n <= n_canyon; ++n)
+        l.across.push_back({true, 1. - 2. * n / n_canyon, 0, 0.});
+      l.i1 = l.across.size() - 1;
+      for (unsigned int n = 1; n < tau.size(); ++n)
+        l.across.push_back({false, -1., -1, tau[n]});
+
+      // --- along the stream ---
+      const double x_r  = water ? g.reservoir_end_x() : 0.;
+      const double x_ru = rock ? g.rock_upstream_x() : 0.;
+      l.x_far           = g.model_upstream_x();
+      l.x_near          = (rock && water) ? std::max(x_r, x_ru) : l.x_far;
+      const Mapper map(g, l);
+      const double h_dam_cell =
+        0.5 * (p.crown_thickness_base + p.crown_thickness_crest) / p.cells_through;
+
+      // far upstream segment: water only (reservoir longer than the rock) or
+      // rock only (the other way round); uniform cells
+      std::vector<double> f_far{0.};
+      if (l.x_near > l.x_far)
+        {
+          const bool   water_only = x_r < x_ru;
+          const double h          = water_only ? p.water_cell_size : p.rock_cell_size;
+          double       L          = 0;
+          for (const Column &c : l.across)
+            for (const double z : dam_levels)
+              {
+                if (water_only ? !(c.canyon && z <= p.water_level) :
+                                 (c.canyon && z > 0))
+                  continue;
+                const Point<2> s  = map.band(c, 0., z);
+                const Point<2> a  = Mapper::on_line(s, l.x_far, map.end_y(c, z), l.x_near);
+                const Point<2> e  = Mapper::on_line(s, l.x_far, map.end_y(c, z), l.x_far);
+                L                 = std::max(L, a.distance(e));
+              }
+          const unsigned int n = std::max(1., std::ceil(L / h - 1e-9));
+          for (unsigned int m = 1; m <= n; ++m)
+            f_far.push_back(double(m) / n);
+        }
+      // near upstream segment: from the dam's upstream face to x_near
+      double h_near = p.water_cell_size;
+      if (rock)
+        h_near = water ? std::min(p.rock_cell_size, p.water_cell_size) : p.rock_cell_size;
+      // Only the lines that bound cells count: in the canyon, upstream of the
+      // dam, the lines up to the water level (water) and at z <= 0 (rock);
+      // downstream only those at z <= 0 (rock under the canyon floor); beside
+      // the canyon all of them (rock up to the crest level).
+      const auto relevant = [&](const Column &c, const double z, const bool upstream) {
+        return !c.canyon || z == 0. || (upstream && water && z <= p.water_level);
+      };
+      double L_near = 0, L_down = 0;
+      for (const Column &c : l.across)
+        for (const double z : dam_levels)
+          {
+            const Point<2> s = map.band(c, 0., z);
+            if ((rock || water) && relevant(c, z, true))
+              L_near = std::max(
+                L_near, s.distance(Mapper::on_line(s, l.x_far, map.end_y(c, z), l.x_near)));
+            if (rock && relevant(c, z, false))
+              {
+                const Point<2> d = map.band(c, 1., z);
+                L_down = std::max(L_down, d.distance(Point<2>(l.x_down, map.end_y(c, z))));
+              }
+          }
+      const auto f_near = (rock || water) ? graded_fractions(L_near, h_dam_cell, h_near) :
+                                            std::vector<double>{0.};
+      const auto f_down =
+        rock ? graded_fractions(L_down, h_dam_cell, p.rock_cell_size) : std::vector<double>{0.};
+
+      for (unsigned int m = 0; m + 1 < f_far.size(); ++m)
+        l.stream.push_back({StreamNode::up_far, f_far[m]});
+      for (unsigned int m = f_near.size() - 1; m > 0; --m)
+        l.stream.push_back({StreamNode::up_near, 1. - f_near[m]});
+      l.k0 = l.stream.size();
+      for (unsigned int m = 0; m <= p.cells_through; ++m)
+        l.stream.push_back({StreamNode::dam, double(m) / p.cells_through});
+      l.k1 = l.stream.size() - 1;
+      for (unsigned int m = 1; m < f_down.size(); ++m)
+        l.stream.push_back({StreamNode::down, f_down[m]});
+
+      const unsigned int n_far = f_far.size() - 1;
+      l.k_rock                 = (water && x_r < x_ru) ? n_far : 0;
+      l.k_water                = (water && x_r < x_ru) ? 0 : n_far;
+      return l;
+    }
+  } // namespace
+
+  void
+  generate_arch_dam(const ArchDamParameters &p, Triangulation<3> &tria)
+  {
+    const ArchDamGeometry g(p);
+    const Layout          l = make_layout(g);
+    const Mapper          map(g, l);
+    const bool            rock = g.has_rock(), water = g.has_water();
+
+    const unsigned int ni = l.across.size() - 1, nk = l.stream.size() - 1,
+                       nj = l.levels.size() - 1;
+
+    const auto region = [&](const long i, const long k, const long j) {
+      if (i < 0 || k < 0 || j < 0 || i >= long(ni) || k >= long(nk) || j >= long(nj))
+        return Region::none;
+      const bool canyon = i >= long(l.i0) && i < long(l.i1);
+      if (canyon && j >= long(l.j0))
+        {
+          if (k >= long(l.k0) && k < long(l.k1))
+            return Region::dam;
+          if (k < long(l.k0) && water && j < long(l.j_water) && k >= long(l.k_water))
+            return Region::water;
+          return Region::air;
+        }
+      return k >= long(l.k_rock) ? Region::rock : Region::outside;
+    };
+    const auto kept = [&](const Region r) {
+      return r == Region::dam || r == Region::water || (r == Region::rock && rock);
+    };
+
+    // Cells in index order, their vertices, and the vertex positions.
+    const auto node = [&](const unsigned int i, const unsigned int k, const unsigned int j) {
+      return (std::size_t(j) * (nk + 1) + k) * (ni + 1) + i;
+    };
+    std::vector<unsigned int>          vertex_of_node((ni + 1) * std::size_t(nk + 1) * (nj + 1),
+                                             numbers::invalid_unsigned_int);
+    std::vector<Point<3>>              vertices;
+    std::vector<CellData<3>>           cells;
+    std::vector<std::array<long, 3>>   cell_index;
+    for (unsigned int j = 0; j < nj; ++j)
+      for (unsigned int k = 0; k < nk; ++k)
+        for (unsigned int i = 0; i < ni; ++i)
+          {
+            const Region r = region(i, k, j);
+            if (!kept(r))
+              continue;
+            CellData<3> cell;
+            for (unsigned int v = 0; v < 8; ++v)
+              {
+                const unsigned int ii = i + (v & 1), kk = k + ((v >> 1) & 1),
+                                   jj = j + ((v >> 2) & 1);
+                unsigned int &vi = vertex_of_node[node(ii, kk, jj)];
+                if (vi == numbers::invalid_unsigned_int)
+                  {
+                    vi = vertices.size();
+                    vertices.push_back(map(ii, kk, jj));
+                  }
+                cell.vertices[v] = vi;
+              }
+            cell.material_id = r == Region::dam ? types::material_id(
+                                                    ids::first_dam_block +
+                                                    (i - l.i0) / p.cells_across_block) :
+                               r == Region::water ? ids::water : ids::rock;
+
+            // Every corner must have a positive Jacobian (edges in the order
+            // xi, eta, zeta; xi runs towards -y, eta downstream, zeta up).
+            for (unsigned int v = 0; v < 8; ++v)
+              {
+                Tensor<1, 3> e[3];
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    const unsigned int w = v ^ (1u << d);
+                    e[d] = vertices[cell.vertices[std::max(v, w)]] -
+                           vertices[cell.vertices[std::min(v, w)]];
+                  }
+                if (!(scalar_product(e[0], cross_product_3d(e[1], e[2])) > 0))
+                  {
+                    const Point<3> c = vertices[cell.vertices[0]];
+                    fail("the parameters give an inverted or degenerate cell near (" +
+                         str(c[0]) + ", " + str(c[1]) + ", " + str(c[2]) +
+                         ") m; check the arch radii, thicknesses, overhang and canyon "
+                         "width.");
+                  }
+              }
+            cells.push_back(cell);
+            cell_index.push_back({{long(i), long(k), long(j)}});
+          }
+
+    tria.clear();
+    tria.create_triangulation(vertices, cells, SubCellData());
+
+    // Boundary ids from the region beyond each boundary face.
+    static const long offset[6][3] = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0},
+                                      {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
+    unsigned int n = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const auto &[i, k, j] = cell_index[n];
+        AssertThrow(cell->vertex_index(0) == cells[n].vertices[0] &&
+                      cell->vertex_index(7) == cells[n].vertices[7],
+                    ExcInternalError());
+        ++n;
+        const Region r = region(i, k, j);
+        for (unsigned int f = 0; f < 6; ++f)
+          {
+            const Region nb = region(i + offset[f][0], k + offset[f][1], j + offset[f][2]);
+            AssertThrow(cell->face(f)->at_boundary() == !kept(nb), ExcInternalError());
+            if (kept(nb))
+              continue;
+            types::boundary_id id = ids::free_surface_solid;
+            if (r == Region::dam)
+              // without rock the base (zeta-) and the abutments (xi+-) are fixed
+              id = (!rock && (f == 0 || f == 1 || f == 4)) ? ids::foundation_bottom :
+                                                             ids::free_surface_solid;
+            else if (r == Region::water)
+              id = f == 5 ? ids::reservoir_surface :
+                   f == 2 ? ids::reservoir_truncation :
+                            ids::reservoir_bottom;
+            else if (nb == Region::air || f == 5)
+              id = ids::free_surface_solid; // ground surface and canyon walls
+            else
+              id = f == 4 ? ids::foundation_bottom : ids::foundation_sides;
+            cell->face(f)->set_boundary_id(id);
+          }
+      }
+  }
+} // namespace archdam::geometry
