@@ -22,9 +22,8 @@
 //  - the pieces of advance() (the two matrix-vector products, the constraint
 //    zeroing, the vector updates), timed alone with the same calls, to show
 //    what dominates a step.
-//  - the set-up: mesh and DOFs, assembly of M and K (and, for comparison, the
-//    same cell loop without insertion into PETSc, and one FESpace::reinit of a
-//    matrix), the Newmark constructor (Kbar + MUMPS Cholesky factorization),
+//  - the set-up: mesh and DOFs, assembly of M and K (and, for comparison, one
+//    FESpace::reinit of a matrix), the Newmark constructor (Kbar + MUMPS Cholesky factorization),
 //    and Kbar built again as the constructor does it.
 //
 // Peak memory is VmHWM of /proc/self/status. It is printed after the steps,
@@ -88,57 +87,6 @@ namespace
     PetscLogEventGetPerfInfo(0 /* main stage */, id, &info);
     return {info.time, info.count};
   }
-  // The cell loop of physics::solid::assemble_mass_and_stiffness (same code),
-  // without distribute_local_to_global: how much of the assembly time is the
-  // computation of cell matrices, how much the insertion into PETSc.
-  double
-  cell_matrices_only(const fe::FESpace &space, const physics::solid::MaterialParameters &mat_p)
-  {
-    using namespace dealii;
-    Timer             timer;
-    hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
-                                   update_values | update_gradients | update_JxW_values);
-    FullMatrix<double>                   cell_m, cell_k;
-    std::vector<SymmetricTensor<2, dim>> eps;
-    std::vector<double>                  div;
-    std::vector<Tensor<1, dim>>          phi;
-    double                               sum = 0;
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
-        {
-          hp_fe_values.reinit(cell);
-          const FEValues<dim> &fv  = hp_fe_values.get_present_fe_values();
-          const unsigned int   n   = fv.dofs_per_cell;
-          const auto          &mat = mat_p.of(cell->material_id());
-          const double         rho = ids::is_dam(cell->material_id()) ? mat.density : 0.;
-          const double         lambda = mat.lambda(), mu = mat.mu();
-          cell_m.reinit(n, n);
-          cell_k.reinit(n, n);
-          eps.resize(n);
-          div.resize(n);
-          phi.resize(n);
-          for (const unsigned int q : fv.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i] = fv[space.displacement].symmetric_gradient(i, q);
-                  div[i] = fv[space.displacement].divergence(i, q);
-                  phi[i] = fv[space.displacement].value(i, q);
-                }
-              const double dx = fv.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j <= i; ++j)
-                  {
-                    cell_m(i, j) += rho * phi[i] * phi[j] * dx;
-                    cell_k(i, j) += (lambda * div[i] * div[j] + 2 * mu * eps[i] * eps[j]) * dx;
-                  }
-            }
-          sum += cell_m(0, 0) + cell_k(n - 1, 0); // keep the work observable
-        }
-    const double t = timer.wall_time();
-    AssertThrow(std::isfinite(sum), dealii::ExcInternalError());
-    return t;
-  }
 } // namespace
 
 int
@@ -195,8 +143,6 @@ main(int argc, char **argv)
   bench::figure(out, "setup: mesh + DOFs + constraints [s]") << m.time_mesh_and_dofs << nd
                                                              << std::endl;
   bench::figure(out, "setup: assembly of M and K [s]") << m.time_assembly << nd << std::endl;
-  bench::figure(out, "setup: assembly, cell matrices only (no insertion) [s]")
-    << cell_matrices_only(*m.space, m.p.materials) << nd << std::endl;
   {
     SparseMatrix scratch;
     Timer        t;
