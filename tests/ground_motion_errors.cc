@@ -4,6 +4,7 @@
 // relatively, so that the messages are the same on every machine.
 
 #include <archdam/loads/ground_motion.h>
+#include <archdam/loads/record_io.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -170,4 +171,74 @@ main(int argc, char **argv)
   });
   expect_input_error("reader errors pass through GroundMotion",
                      [] { ground_motion_x("gm_too_few.AT2", "auto", "g"); });
+
+  std::cout << "\nSingle-column files" << std::endl;
+  write("gm_single_pairs.txt", "# a\n0.1\n0.2 0.3\n");
+  expect_input_error("two numbers on line 3", [] {
+    read_single_column("gm_single_pairs.txt", 0.01, 1.);
+  });
+  write("gm_single_text.txt", "0.1\n0.2\nzero\n");
+  expect_input_error("text on line 3",
+                     [] { read_single_column("gm_single_text.txt", 0.01, 1.); });
+  write("gm_single_one.txt", "# a\n0.1\n");
+  expect_input_error("one sample", [] { read_single_column("gm_single_one.txt", 0.01, 1.); });
+  expect_input_error("time step -0.01 s",
+                     [] { read_single_column("gm_single_text.txt", -0.01, 1.); });
+  expect_input_error("Format single-column without Time step",
+                     [] { ground_motion_x("gm_single_one.txt", "single-column", "g"); });
+
+  std::cout << "\nGenerated motions" << std::endl;
+  const auto generated = [](const std::function<void(ArtificialMotionParameters &)> &change) {
+    GroundMotionParameters p;
+    p.components[0].source = "generated";
+    change(p.generated);
+    const GroundMotion motion(p, "");
+  };
+  expect_input_error("strong part ends after the motion",
+                     [&] { generated([](auto &g) { g.duration = 10; }); });
+  expect_input_error("rise ends after the strong part", [&] {
+    generated([](auto &g) { g.envelope.rise_end = 5, g.envelope.strong_end = 4; });
+  });
+  expect_input_error("Target spectrum = table without a table",
+                     [&] { generated([](auto &g) { g.spectrum = "table"; }); });
+  expect_input_error("malformed spectrum table", [&] {
+    generated([](auto &g) { g.spectrum = "table", g.table = "0: 1; 0.2; 1: 2"; });
+  });
+  expect_input_error("spectrum table periods decreasing", [&] {
+    generated([](auto &g) { g.spectrum = "table", g.table = "0: 1; 0.5: 2.5; 0.2: 2.5"; });
+  });
+  expect_input_error("Characteristic period 0", [&] {
+    generated([](auto &g) { g.characteristic_period = 0; });
+  });
+  expect_input_error("shortest matched period below 3 time steps", [&] {
+    generated([](auto &g) { g.time_step = 0.02; });
+  });
+  expect_input_error("longest matched period above half the duration", [&] {
+    generated([](auto &g) { g.period_max = 15; });
+  });
+  expect_input_error("damping ratio 1", [&] { generated([](auto &g) { g.damping = 1; }); });
+  expect_input_error("vertical factor that is not a number", [] {
+    GroundMotionParameters p;
+    p.components[2].source     = "generated";
+    p.generated.vertical_factor = "two thirds";
+    const GroundMotion motion(p, "");
+  });
+
+  std::cout << "\nProcessing" << std::endl;
+  const auto processed = [](const std::string                                &file,
+                            const std::function<void(ProcessingParameters &)> &change) {
+    GroundMotionParameters p;
+    p.components[0].file = file;
+    change(p.components[0].processing);
+    const GroundMotion motion(p, "");
+  };
+  write("gm_irregular.txt", "0 0.1\n0.01 0.2\n0.025 0.1\n0.03 0\n0.04 0.1\n");
+  expect_input_error("window ends after the record",
+                     [&] { processed("gm_irregular.txt", [](auto &q) { q.end_time = 1; }); });
+  expect_input_error("filter on irregular times", [&] {
+    processed("gm_irregular.txt", [](auto &q) { q.high_pass = 0.5; });
+  });
+  expect_input_error("low-pass corner above the Nyquist frequency of the resampled record", [&] {
+    processed("gm_irregular.txt", [](auto &q) { q.time_step = 0.01, q.low_pass = 60; });
+  });
 }

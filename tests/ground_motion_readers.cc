@@ -6,8 +6,16 @@
 //  2. a record with the older "n dt NPTS, DT" header and Windows line ends;
 //  3. a two-column file written here from a known formula: samples,
 //     interpolation, zero outside the record, units and scale factors;
-//  4. GroundMotion from a prm string, with relative and absolute file names.
+//  4. GroundMotion from a prm string, with relative and absolute file names;
+//  5. a single-column file with a given time step, typed values;
+//  6. processing from the prm entries (Processing subsection): target PGA,
+//     resampling and baseline correction, against their definitions;
+//  7. a generated component (Source = generated): the same record as the
+//     generator called directly with the same settings, the scale factor
+//     applied, the vertical target scaled by 2/3 (the generator itself is
+//     verified in motion_generation).
 
+#include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/ground_motion.h>
 
 #include <deal.II/base/mpi.h>
@@ -342,6 +350,135 @@ namespace
            none.empty() && none.duration() == 0. &&
              none.acceleration(1.).norm() == 0.);
   }
+
+  /// GroundMotionParameters parsed from @p text (the "Ground motion" section).
+  GroundMotionParameters
+  parse(const std::string &text)
+  {
+    GroundMotionParameters   parameters;
+    dealii::ParameterHandler prm;
+    prm.enter_subsection("Ground motion");
+    parameters.add_parameters(prm);
+    prm.leave_subsection();
+    prm.parse_input_from_string(text);
+    return parameters;
+  }
+
+  void
+  check_single_column()
+  {
+    std::cout << "\nSingle-column file, time step 0.025 s, cm/s^2" << std::endl;
+    std::ofstream("gm_single.txt") << "# acceleration in cm/s^2\n12.5\n-3\n\n  40 \n0\n";
+    const AccelerationRecord r = read_single_column("gm_single.txt", 0.025, 0.01, 2.);
+    const std::vector<double> expected = {0.25, -0.06, 0.8, 0.};
+    bool ok = r.values.size() == 4 && r.source == "gm_single.txt";
+    for (std::size_t k = 0; ok && k < 4; ++k)
+      ok = close(r.values[k], expected[k], 1e-15) && close(r.times[k], 0.025 * k, 1e-15);
+    report("4 samples 2 * 0.01 * (12.5, -3, 40, 0) m/s^2 at k * 0.025 s", ok);
+
+    const GroundMotionParameters p = parse("subsection Ground motion\n"
+                                           "  subsection Component z\n"
+                                           "    set File = gm_single.txt\n"
+                                           "    set Format = single-column\n"
+                                           "    set Time step = 0.025\n"
+                                           "    set Units = m/s^2\n"
+                                           "  end\n"
+                                           "end\n");
+    const GroundMotion motion(p, "");
+    report("GroundMotion, Format single-column: a_z(0.0375 s) = (-3 + 40)/2 m/s^2",
+           close(motion.acceleration(0.0375)[2], 18.5, 1e-13));
+  }
+
+  void
+  check_processing()
+  {
+    std::cout << "\nProcessing from parameters (Rinaldi 228)" << std::endl;
+    const GroundMotionParameters p =
+      parse("subsection Ground motion\n"
+            "  subsection Component x\n"
+            "    set File = ground_motions/Rinaldi228.AT2\n"
+            "    subsection Processing\n"
+            "      set Resample time step = 0.005\n"
+            "      set Baseline correction = true\n"
+            "      set Target PGA = 0.5\n"
+            "    end\n"
+            "  end\n"
+            "end\n");
+    const auto &q = p.components[0].processing;
+    report("parsed: Resample time step 0.005, Baseline correction, Target PGA 0.5",
+           q.time_step == 0.005 && q.baseline && q.target_pga == 0.5 && q.any());
+    const GroundMotion        motion(p, data_directory);
+    const AccelerationRecord &r = motion.record(0);
+    double                    dt = 0.;
+    report("resampled: equally spaced at 0.005 s, 3981 samples (19.9 s)",
+           r.is_uniform(&dt) && close(dt, 0.005, 1e-12) && r.values.size() == 3981);
+    report("peak = 0.5 g", close(r.peak(), 0.5 * g, 1e-12 * g));
+    // End velocity and displacement by the exact rule for piecewise-linear a.
+    double v = 0., d = 0., v_peak = 0., d_peak = 0.;
+    for (std::size_t k = 0; k + 1 < r.times.size(); ++k)
+      {
+        const double h = r.times[k + 1] - r.times[k];
+        d += h * v + h * h * (r.values[k] / 3 + r.values[k + 1] / 6);
+        v += h * (r.values[k] + r.values[k + 1]) / 2;
+        v_peak = std::max(v_peak, std::abs(v));
+        d_peak = std::max(d_peak, std::abs(d));
+      }
+    report("baseline: |v_end| < 1e-8 peak v, |d_end| < 1e-8 peak d",
+           std::abs(v) < 1e-8 * v_peak && std::abs(d) < 1e-8 * d_peak);
+    report("the source is still the file",
+           r.source == data_directory + "/ground_motions/Rinaldi228.AT2");
+  }
+
+  void
+  check_generated()
+  {
+    std::cout << "\nGenerated components" << std::endl;
+    const GroundMotionParameters p = parse("subsection Ground motion\n"
+                                           "  subsection Component y\n"
+                                           "    set Source = generated\n"
+                                           "    set Scale factor = -1\n"
+                                           "  end\n"
+                                           "  subsection Component z\n"
+                                           "    set Source = generated\n"
+                                           "  end\n"
+                                           "  subsection Generated motion\n"
+                                           "    set Peak ground acceleration = 0.2\n"
+                                           "    set Characteristic period = 0.3\n"
+                                           "    set Duration = 10\n"
+                                           "    set Strong motion end = 7\n"
+                                           "    set Longest matched period = 3\n"
+                                           "    set Seed = 11\n"
+                                           "  end\n"
+                                           "end\n");
+    const GroundMotion motion(p, "");
+    report("components y and z, not x",
+           !motion.has_component(0) && motion.has_component(1) && motion.has_component(2));
+    report("duration 10 s", close(motion.duration(), 10., 1e-12));
+    report("generation reports for y and z only",
+           motion.generation_report(0) == nullptr && motion.generation_report(1) != nullptr &&
+             motion.generation_report(2) != nullptr);
+
+    GenerationSettings s;
+    s.target              = TargetSpectrum::nb35047(0.2 * g, 0.3, 2.5);
+    s.duration            = 10.;
+    s.envelope.strong_end = 7.;
+    s.period_max          = 3.;
+    s.seed                = 11;
+    s.stream              = 1;
+    const AccelerationRecord y = generate_artificial_motion(s);
+    s.stream                   = 2;
+    s.target                   = s.target.scaled(2. / 3.);
+    const AccelerationRecord z = generate_artificial_motion(s);
+    bool same_y = motion.record(1).values.size() == y.values.size();
+    for (std::size_t k = 0; same_y && k < y.values.size(); ++k)
+      same_y = motion.record(1).values[k] == -y.values[k];
+    report("y: -1 times the generator's stream 1, bit for bit", same_y);
+    report("z: the generator's stream 2 for 2/3 of the target, bit for bit",
+           motion.record(2).values == z.values);
+    report("PGA of y 0.2 g, of z 2/3 * 0.2 g",
+           close(motion.record(1).peak(), 0.2 * g, 1e-9 * g) &&
+             close(motion.record(2).peak(), 0.2 * g * 2. / 3., 1e-9 * g));
+  }
 } // namespace
 
 
@@ -354,4 +491,7 @@ main(int argc, char **argv)
   check_older_peer_header();
   check_two_column();
   check_ground_motion();
+  check_single_column();
+  check_processing();
+  check_generated();
 }

@@ -1,6 +1,10 @@
 #pragma once
 
 #include <archdam/base/input_error.h>
+#include <archdam/loads/acceleration_record.h>
+#include <archdam/loads/artificial_motion.h>
+#include <archdam/loads/record_io.h>
+#include <archdam/loads/record_processing.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
@@ -10,92 +14,54 @@
 #include <vector>
 
 /**
- * Ground-motion input: readers for recorded accelerograms and the three-
- * component ground acceleration a_g(t) that drives the dynamic stage
- * (numerics.md §6). Components are named by the model axes (architecture.md
- * §3): x stream, y cross-stream, z vertical.
+ * Ground-motion input: the three-component ground acceleration a_g(t) that
+ * drives the dynamic stage (numerics.md §6), each component a recorded
+ * accelerogram (record_io.h) or an artificial spectrum-compatible motion
+ * (artificial_motion.h), optionally processed (record_processing.h).
+ * Components are named by the model axes (architecture.md §3): x stream,
+ * y cross-stream, z vertical.
  */
 namespace archdam::loads
 {
   /**
-   * A sampled acceleration history in m/s^2 (SI, architecture.md §3).
-   */
-  struct AccelerationRecord
-  {
-    /// The file it came from, as it was given to the reader.
-    std::string source;
-    /// Sample times in s, strictly increasing; times[0] may be > 0.
-    std::vector<double> times;
-    /// Accelerations at the sample times, in m/s^2.
-    std::vector<double> values;
-
-    /**
-     * Piecewise-linear interpolation between samples. Before times.front()
-     * and after times.back() the ground is at rest: the value is 0.
-     */
-    double
-    value(const double t) const;
-
-    /// End of the record, times.back(), in s.
-    double
-    duration() const;
-
-    /// Peak absolute value, max |value|, in m/s^2.
-    double
-    peak() const;
-  };
-
-  /**
-   * Read a PEER NGA .AT2 file (accelerations in g, converted with the
-   * standard gravity g = 9.80665 m/s^2): 4 header lines, the 4th giving NPTS
-   * and DT either as "NPTS=  4000, DT=   .0050 SEC" (NGA, NGA-West2) or as
-   * "4000    .0050    NPTS, DT" (the earlier PEER Strong Motion Database),
-   * then NPTS values in rows of any width. Sample k is at time k*DT.
-   * The values are multiplied by @p scale.
-   *
-   * Throws InputError naming the file (and line) for every malformed input.
-   */
-  AccelerationRecord
-  read_at2(const std::string &filename, const double scale = 1.0);
-
-  /**
-   * Read a two-column text file "time acceleration", columns separated by
-   * commas, tabs or blanks; blank lines and lines starting with '#' are
-   * skipped. Accelerations are multiplied by @p to_si (the size of the file's
-   * unit in m/s^2, e.g. 0.01 for cm/s^2) and by @p scale.
-   *
-   * Throws InputError naming the file (and line) for every malformed input.
-   */
-  AccelerationRecord
-  read_two_column(const std::string &filename,
-                  const double       to_si,
-                  const double       scale = 1.0);
-
-  /**
-   * The "Ground motion" parameters: one record file per axis.
+   * The "Ground motion" parameters: per axis a record file or a generated
+   * motion, with optional processing; and the description of the generated
+   * motions, shared by the axes.
    */
   struct GroundMotionParameters
   {
     struct Component
     {
-      /// Record file; "" means this component is zero.
+      /// file | generated.
+      std::string source = "file";
+      /// Record file; "" means this component is zero (Source = file).
       std::string file;
-      /// auto | AT2 | two-column (auto: .at2/.AT2 extension means AT2,
-      /// anything else two-column).
+      /// auto | AT2 | two-column | single-column (auto: .at2/.AT2 extension
+      /// means AT2, anything else two-column).
       std::string format = "auto";
-      /// g | m/s^2 | cm/s^2 (two-column files only; AT2 files are in g).
+      /// g | m/s^2 | cm/s^2 (text files only; AT2 files are in g).
       std::string units = "g";
+      /// Sample spacing of a single-column file, s.
+      double time_step = 0.;
       /// Dimensionless factor applied to the record; negative flips it.
       double scale = 1.0;
+      /// Optional processing, after the scale factor.
+      ProcessingParameters processing;
     };
 
     /// Components along x (stream), y (cross-stream), z (vertical).
     std::array<Component, 3> components;
 
+    /// What a component with Source = generated is.
+    ArtificialMotionParameters generated;
+
     /**
      * Declare, in the current subsection of @p prm, the subsections
-     * "Component x", "Component y", "Component z", each with "File",
-     * "Format", "Units" and "Scale factor", bound to the members above.
+     * "Component x", "Component y", "Component z", each with "Source",
+     * "File", "Format", "Units", "Time step", "Scale factor" and a
+     * subsection "Processing" (ProcessingParameters), and the subsection
+     * "Generated motion" (ArtificialMotionParameters), bound to the members
+     * above.
      */
     void
     add_parameters(dealii::ParameterHandler &prm);
@@ -103,15 +69,18 @@ namespace archdam::loads
 
   /**
    * The ground acceleration a_g(t) = (a_x, a_y, a_z) in m/s^2, read from the
-   * files named in GroundMotionParameters.
+   * files named in GroundMotionParameters or generated, then scaled and
+   * processed.
    */
   class GroundMotion
   {
   public:
     /**
-     * Read every component that names a file. Relative file names are
-     * resolved against @p base_directory (the directory of the prm file);
-     * "" means the current working directory.
+     * Read every component that names a file and generate every component
+     * with Source = generated; then apply the scale factor and the
+     * processing. Relative file names are resolved against @p base_directory
+     * (the directory of the prm file); "" means the current working
+     * directory. InputError for every problem, naming the component.
      */
     GroundMotion(const GroundMotionParameters &p,
                  const std::string            &base_directory);
@@ -136,8 +105,16 @@ namespace archdam::loads
     const AccelerationRecord &
     record(const unsigned int d) const;
 
+    /// How well generated component @p d matches its target; nullptr if it
+    /// is not generated.
+    const GenerationReport *
+    generation_report(const unsigned int d) const;
+
   private:
     /// One record per axis; a component without a file has no samples.
     std::array<AccelerationRecord, 3> records;
+    /// Matching reports of the generated components.
+    std::array<GenerationReport, 3> reports;
+    std::array<bool, 3>             generated = {{false, false, false}};
   };
 } // namespace archdam::loads
