@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "archdam_tests.h"
+#include "rk4_spectrum.h"
 
 using namespace archdam::loads;
 using archdam::testing::log;
@@ -37,40 +38,10 @@ namespace
 {
   const std::string data = SOURCE_DIR "/../../shared/data/ground_motions/";
 
-  /// Peak |u| by RK4 (see the header comment).
   double
   rk4_peak(const AccelerationRecord &r, const double T, const double zeta)
   {
-    const double w = 2 * M_PI / T;
-    double       u = 0, v = 0, peak = 0;
-    const auto   step = [&](const double h, const double a0, const double a1) {
-      // State derivative at load a: (v, -a - 2 zeta w v - w^2 u).
-      const auto   f   = [&](double uu, double vv, double a, double &du, double &dv) {
-        du = vv;
-        dv = -a - 2 * zeta * w * vv - w * w * uu;
-      };
-      const double am = 0.5 * (a0 + a1);
-      double       k1u, k1v, k2u, k2v, k3u, k3v, k4u, k4v;
-      f(u, v, a0, k1u, k1v);
-      f(u + 0.5 * h * k1u, v + 0.5 * h * k1v, am, k2u, k2v);
-      f(u + 0.5 * h * k2u, v + 0.5 * h * k2v, am, k3u, k3v);
-      f(u + h * k3u, v + h * k3v, a1, k4u, k4v);
-      u += h / 6 * (k1u + 2 * k2u + 2 * k3u + k4u);
-      v += h / 6 * (k1v + 2 * k2v + 2 * k3v + k4v);
-      peak = std::max(peak, std::abs(u));
-    };
-    for (std::size_t k = 0; k + 1 < r.times.size(); ++k)
-      {
-        const double       interval = r.times[k + 1] - r.times[k];
-        const unsigned int m = static_cast<unsigned int>(std::ceil(interval / (T / 2000)));
-        for (unsigned int j = 0; j < m; ++j)
-          step(interval / m,
-               r.values[k] + (r.values[k + 1] - r.values[k]) * j / m,
-               r.values[k] + (r.values[k + 1] - r.values[k]) * (j + 1.) / m);
-      }
-    for (unsigned int j = 0; j < 4000; ++j)
-      step(T / 2000, 0., 0.);
-    return peak;
+    return archdam::testing::rk4_peak(r, T, zeta, 2000);
   }
 
   void
