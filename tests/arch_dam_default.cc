@@ -34,6 +34,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include "arch_dam_reference.h"
 #include "archdam_tests.h"
 
 #include <cmath>
@@ -46,33 +47,12 @@ using namespace dealii;
 using namespace archdam;
 using archdam::testing::log;
 
+using archdam::testing::bilinear_area;
+using archdam::testing::integrate;
+using archdam::testing::scaled_jacobian;
+
 namespace
 {
-  // Scaled Jacobian of a hexahedron (vertices in deal.II's lexicographic order).
-  double
-  scaled_jacobian(const std::array<Point<3>, 8> &x)
-  {
-    double worst = 1;
-    for (unsigned int v = 0; v < 8; ++v)
-      {
-        Tensor<1, 3> e[3];
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            const unsigned int w = v ^ (1u << d);
-            e[d]                 = x[std::max(v, w)] - x[std::min(v, w)];
-            e[d] /= e[d].norm();
-          }
-        worst = std::min(worst, scalar_product(e[0], cross_product_3d(e[1], e[2])));
-      }
-    Tensor<1, 3> a[3]; // principal axes: mean of the four edges in each direction
-    for (unsigned int v = 0; v < 8; ++v)
-      for (unsigned int d = 0; d < 3; ++d)
-        if (!(v & (1u << d)))
-          a[d] += x[v | (1u << d)] - x[v];
-    for (auto &t : a)
-      t /= t.norm();
-    return std::min(worst, scalar_product(a[0], cross_product_3d(a[1], a[2])));
-  }
 
   double
   longest_edge(const Triangulation<3>::active_cell_iterator &cell)

@@ -29,6 +29,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 
+#include "arch_dam_reference.h"
 #include "archdam_tests.h"
 
 #include <cmath>
@@ -40,23 +41,12 @@ using archdam::testing::check_below;
 using archdam::testing::check_relative;
 using archdam::testing::log;
 
+using archdam::testing::bilinear_area;
+using archdam::testing::integrate;
+using archdam::testing::scaled_jacobian;
+
 namespace
 {
-  // Composite Gauss-Legendre rule on [a, b]: 16 panels of 20 points.
-  double
-  integrate(const std::function<double(double)> &f, const double a, const double b)
-  {
-    const QGauss<1> q(20);
-    const int       panels = 16;
-    double          sum    = 0;
-    for (int p = 0; p < panels; ++p)
-      {
-        const double lo = a + (b - a) * p / panels, h = (b - a) / panels;
-        for (unsigned int i = 0; i < q.size(); ++i)
-          sum += q.weight(i) * h * f(lo + h * q.point(i)[0]);
-      }
-    return sum;
-  }
 
   // Centre and radius of the circle through three points of a horizontal plane.
   std::pair<Point<2>, double>

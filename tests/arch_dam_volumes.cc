@@ -40,6 +40,7 @@
 #include <deal.II/grid/tria_accessor.h>
 #include <deal.II/grid/tria_iterator.h>
 
+#include "arch_dam_reference.h"
 #include "archdam_tests.h"
 
 #include <cmath>
@@ -50,38 +51,13 @@ using namespace dealii;
 using namespace archdam;
 using archdam::testing::log;
 
+using archdam::testing::bilinear_area;
+using archdam::testing::integrate;
+using archdam::testing::scaled_jacobian;
+
 namespace
 {
-  double
-  integrate(const std::function<double(double)> &f, const double a, const double b)
-  {
-    const QGauss<1> q(20);
-    const int       panels = 16;
-    double          sum    = 0;
-    for (int p = 0; p < panels; ++p)
-      {
-        const double lo = a + (b - a) * p / panels, h = (b - a) / panels;
-        for (unsigned int i = 0; i < q.size(); ++i)
-          sum += q.weight(i) * h * f(lo + h * q.point(i)[0]);
-      }
-    return sum;
-  }
 
-  // Area of the bilinear quadrilateral with vertices in deal.II's order.
-  double
-  bilinear_area(const Point<3> (&v)[4])
-  {
-    const QGauss<2> q(4);
-    double          area = 0;
-    for (unsigned int i = 0; i < q.size(); ++i)
-      {
-        const double       a = q.point(i)[0], b = q.point(i)[1];
-        const Tensor<1, 3> xa = (1 - b) * (v[1] - v[0]) + b * (v[3] - v[2]);
-        const Tensor<1, 3> xb = (1 - a) * (v[2] - v[0]) + a * (v[3] - v[1]);
-        area += q.weight(i) * cross_product_3d(xa, xb).norm();
-      }
-    return area;
-  }
 
   struct Measures
   {
@@ -104,7 +80,7 @@ namespace
             if (!cell->face(f)->at_boundary() &&
                 cell->neighbor(f)->material_id() == ids::water)
               {
-                Point<3> v[4];
+                std::array<Point<3>, 4> v;
                 for (unsigned int i = 0; i < 4; ++i)
                   v[i] = cell->face(f)->vertex(i);
                 m.wetted_area += bilinear_area(v);
