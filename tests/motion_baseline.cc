@@ -30,40 +30,20 @@
 #include <iomanip>
 
 #include "archdam_tests.h"
+#include "motion_reference.h"
 
 using namespace archdam::loads;
 using archdam::testing::check_below;
 using archdam::testing::check_relative;
 using archdam::testing::log;
 
+using archdam::testing::ends;
+using archdam::testing::Ends;
+
 namespace
 {
   const std::string data = SOURCE_DIR "/../../shared/data/ground_motions/";
   const double      g    = 9.80665;
-
-  struct Ends
-  {
-    double v_end = 0, d_end = 0, v_peak = 0, d_peak = 0;
-  };
-
-  /// Velocity and displacement of the piecewise-linear acceleration.
-  Ends
-  ends(const AccelerationRecord &r)
-  {
-    Ends   e;
-    double v = 0, d = 0;
-    for (std::size_t k = 0; k + 1 < r.times.size(); ++k)
-      {
-        const double h = r.times[k + 1] - r.times[k];
-        d += h * v + h * h * (r.values[k] / 3 + r.values[k + 1] / 6);
-        v += h * (r.values[k] + r.values[k + 1]) / 2;
-        e.v_peak = std::max(e.v_peak, std::abs(v));
-        e.d_peak = std::max(e.d_peak, std::abs(d));
-      }
-    e.v_end = v;
-    e.d_end = d;
-    return e;
-  }
 
   /// @p x in cm with one decimal, without "-0.0" for round-off values.
   double

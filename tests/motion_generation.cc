@@ -33,12 +33,15 @@
 #include <iomanip>
 
 #include "archdam_tests.h"
-#include "rk4_spectrum.h"
+#include "motion_reference.h"
 
 using namespace archdam::loads;
 using archdam::testing::check_below;
 using archdam::testing::check_relative;
 using archdam::testing::log;
+
+using archdam::testing::ends;
+using archdam::testing::Ends;
 
 namespace
 {
@@ -75,29 +78,6 @@ namespace
           << std::fixed << std::setprecision(2) << double(within) / n << std::defaultfloat
           << ", at least 0.90: " << (within >= 90 ? "yes" : "NO") << std::endl;
     check_below(name + ": largest deviation from the target", worst, 0.2);
-  }
-
-  struct Ends
-  {
-    double v_end = 0, d_end = 0, v_peak = 0, d_peak = 0;
-  };
-
-  Ends
-  ends(const AccelerationRecord &r)
-  {
-    Ends   e;
-    double v = 0, d = 0;
-    for (std::size_t k = 0; k + 1 < r.times.size(); ++k)
-      {
-        const double h = r.times[k + 1] - r.times[k];
-        d += h * v + h * h * (r.values[k] / 3 + r.values[k + 1] / 6);
-        v += h * (r.values[k] + r.values[k + 1]) / 2;
-        e.v_peak = std::max(e.v_peak, std::abs(v));
-        e.d_peak = std::max(e.d_peak, std::abs(d));
-      }
-    e.v_end = v;
-    e.d_end = d;
-    return e;
   }
 
   double

@@ -29,7 +29,7 @@
 #include <vector>
 
 #include "archdam_tests.h"
-#include "rk4_spectrum.h"
+#include "motion_reference.h"
 
 using namespace archdam::loads;
 using archdam::testing::log;

@@ -1,5 +1,6 @@
-// An independent reference for response spectra, shared by the tests: the
-// peak relative displacement of a damped SDOF oscillator under a
+// Independent references for the ground-motion tests.
+//
+// rk4_peak: the peak relative displacement of a damped SDOF oscillator under a
 // piecewise-linear ground acceleration, by classical fourth-order Runge-Kutta
 // with steps of T / steps_per_period (a method entirely different from the
 // library's exact Nigam-Jennings recurrence), including the free vibration
@@ -50,5 +51,32 @@ namespace archdam::testing
     for (unsigned int j = 0; j < 2 * steps_per_period; ++j)
       step(h_max, 0., 0.);
     return peak;
+  }
+
+  /// End and peak values of velocity and displacement.
+  struct Ends
+  {
+    double v_end = 0, d_end = 0, v_peak = 0, d_peak = 0;
+  };
+
+  /// Velocity and displacement of the piecewise-linear acceleration,
+  /// integrated exactly interval by interval (trapezoid for v, the cubic
+  /// term for d), independently of the library's integration.
+  inline Ends
+  ends(const loads::AccelerationRecord &r)
+  {
+    Ends   e;
+    double v = 0, d = 0;
+    for (std::size_t k = 0; k + 1 < r.times.size(); ++k)
+      {
+        const double h = r.times[k + 1] - r.times[k];
+        d += h * v + h * h * (r.values[k] / 3 + r.values[k + 1] / 6);
+        v += h * (r.values[k] + r.values[k + 1]) / 2;
+        e.v_peak = std::max(e.v_peak, std::abs(v));
+        e.d_peak = std::max(e.d_peak, std::abs(d));
+      }
+    e.v_end = v;
+    e.d_end = d;
+    return e;
   }
 } // namespace archdam::testing
