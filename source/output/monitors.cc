@@ -144,13 +144,18 @@ namespace archdam::output
   }
 
   Tensor<1, dim>
-  Monitors::displacement(const unsigned int k, const Vector &u) const
+  Monitors::interpolate(const unsigned int k, const std::vector<double> &values) const
   {
-    const auto     values = gather(u, weights[k]);
     Tensor<1, dim> result;
     for (unsigned int i = 0; i < values.size(); ++i)
       result += values[i] * weights[k].value[i];
     return result;
+  }
+
+  Tensor<1, dim>
+  Monitors::displacement(const unsigned int k, const Vector &u) const
+  {
+    return interpolate(k, gather(u, weights[k]));
   }
 
   std::vector<double>
@@ -159,23 +164,24 @@ namespace archdam::output
     std::vector<double> row{s.time};
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const auto push3 = [&](const Vector &vec) {
-          const auto t = displacement(k, vec);
+        const auto push3 = [&](const std::vector<double> &values) {
+          const auto t = interpolate(k, values);
           for (unsigned int d = 0; d < dim; ++d)
             row.push_back(t[d]);
         };
+        // The nodal displacements serve both u and the stress: gathered once.
+        const auto u = record_u || record_stress ? gather(s.u, weights[k]) : std::vector<double>();
         if (record_u)
-          push3(s.u);
+          push3(u);
         if (record_v)
-          push3(s.v);
+          push3(gather(s.v, weights[k]));
         if (record_a)
-          push3(s.a);
+          push3(gather(s.a, weights[k]));
         if (record_stress)
           {
-            const auto     values = gather(s.u, weights[k]);
             Tensor<2, dim> grad;
-            for (unsigned int i = 0; i < values.size(); ++i)
-              grad += values[i] * weights[k].gradient[i];
+            for (unsigned int i = 0; i < u.size(); ++i)
+              grad += u[i] * weights[k].gradient[i];
             const auto [s1, s3] =
               physics::solid::principal_stresses(weights[k].material.stress(symmetrize(grad)));
             row.push_back(s1);

@@ -75,6 +75,9 @@ namespace archdam::output
 
     std::vector<double>
     gather(const Vector &vec, const Weights &w) const;
+    /// The vector at point @p k from the gathered nodal values.
+    dealii::Tensor<1, dim>
+    interpolate(unsigned int k, const std::vector<double> &values) const;
 
     const fe::FESpace        &space;
     std::vector<MonitorPoint> points;
