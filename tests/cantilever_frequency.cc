@@ -59,10 +59,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <array>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -70,8 +68,10 @@
 #include <vector>
 
 #include "archdam_tests.h"
+#include "beam_reference.h"
 
 using archdam::testing::check_relative;
+using archdam::testing::first_root;
 using archdam::testing::log;
 
 namespace
@@ -82,106 +82,8 @@ namespace
   constexpr double nu     = 0.;
   constexpr double h      = 1.;     // section side, m (x and y)
   constexpr double length = 10.;    // cantilever length = box height (z), m
-  constexpr double k_shear = 5. / 6.;
 
-  constexpr double A = h * h;
-  constexpr double I = h * h * h * h / 12.;
-  constexpr double G = E / (2. * (1. + nu));
-
-  /// Euler-Bernoulli first circular frequency for a given root l of
-  /// 1 + cosh(l) cos(l) = 0.
-  double
-  euler_bernoulli_omega(const double l)
-  {
-    return l * l * std::sqrt(E * I / (rho * A * std::pow(length, 4)));
-  }
-
-  /// Bisection for a sign change of f in [lo, hi].
-  double
-  bisect(const std::function<double(double)> &f, double lo, double hi)
-  {
-    double flo = f(lo);
-    for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * std::abs(hi); ++i)
-      {
-        const double mid = 0.5 * (lo + hi), fm = f(mid);
-        if ((fm > 0) == (flo > 0))
-          {
-            lo  = mid;
-            flo = fm;
-          }
-        else
-          hi = mid;
-      }
-    return 0.5 * (lo + hi);
-  }
-
-  /// The first root of f above lo, found by scanning in steps of (hi - lo)/n.
-  double
-  first_root(const std::function<double(double)> &f, const double lo, const double hi,
-             const unsigned int n = 400)
-  {
-    double x0 = lo, f0 = f(lo);
-    for (unsigned int i = 1; i <= n; ++i)
-      {
-        const double x1 = lo + (hi - lo) * i / n, f1 = f(x1);
-        if ((f1 > 0) != (f0 > 0))
-          return bisect(f, x0, x1);
-        x0 = x1;
-        f0 = f1;
-      }
-    return std::nan("");
-  }
-
-  /// Huang's clamped-free Timoshenko frequency function of w [rad/s].
-  double
-  huang_clamped_free(const double w, const double r2, const double s2)
-  {
-    const double b = std::sqrt(rho * A * w * w * std::pow(length, 4) / (E * I));
-    const double q = std::sqrt((r2 - s2) * (r2 - s2) + 4. / (b * b));
-    const double alpha = std::sqrt(0.5 * (-(r2 + s2) + q));
-    const double beta  = std::sqrt(0.5 * ((r2 + s2) + q));
-    return 2. + (b * b * (r2 - s2) * (r2 - s2) + 2.) * std::cosh(b * alpha) * std::cos(b * beta) -
-           b * (r2 + s2) / std::sqrt(1. - b * b * r2 * s2) * std::sinh(b * alpha) *
-             std::sin(b * beta);
-  }
-
-  /// Second method: shooting on the Timoshenko equations
-  ///   w' = psi + Q/(k G A), psi' = M/(E I), Q' = -rho A w^2 w,
-  ///   M' = -Q - rho I w^2 psi
-  /// from the clamped end (w = psi = 0) with (Q, M) = (1, 0) and (0, 1);
-  /// the free end needs Q = M = 0: the 2x2 determinant vanishes.
-  double
-  shooting_clamped_free(const double omega)
-  {
-    using State = std::array<double, 4>;
-    const auto rhs = [&](const State &y) {
-      return State{{y[1] + y[2] / (k_shear * G * A), y[3] / (E * I),
-                    -rho * A * omega * omega * y[0], -y[2] - rho * I * omega * omega * y[1]}};
-    };
-    const auto integrate = [&](State y) {
-      const unsigned int n  = 2000;
-      const double       dx = length / n;
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          State k1 = rhs(y), tmp;
-          for (unsigned int j = 0; j < 4; ++j)
-            tmp[j] = y[j] + 0.5 * dx * k1[j];
-          State k2 = rhs(tmp);
-          for (unsigned int j = 0; j < 4; ++j)
-            tmp[j] = y[j] + 0.5 * dx * k2[j];
-          State k3 = rhs(tmp);
-          for (unsigned int j = 0; j < 4; ++j)
-            tmp[j] = y[j] + dx * k3[j];
-          State k4 = rhs(tmp);
-          for (unsigned int j = 0; j < 4; ++j)
-            y[j] += dx / 6. * (k1[j] + 2. * k2[j] + 2. * k3[j] + k4[j]);
-        }
-      return y;
-    };
-    const State a = integrate({{0., 0., 1., 0.}});
-    const State c = integrate({{0., 0., 0., 1.}});
-    return a[2] * c[3] - a[3] * c[2];
-  }
+  const archdam::testing::SquareCantilever beam{E, rho, nu, h, length};
 
   /// Round to @p digits significant digits (for output that must not depend
   /// on round-off).
@@ -297,30 +199,30 @@ main(int argc, char **argv)
 
       // ---------------------------------------------------------------------
       // References.
-      const double r2 = I / (A * length * length);
-      const double s2 = E * I / (k_shear * A * G * length * length);
+      const double r2 = beam.r2();
+      const double s2 = beam.s2();
 
       // Euler-Bernoulli: first root of 1 + cosh(l) cos(l) = 0.
       const double l_eb =
         first_root([](const double l) { return 1. + std::cosh(l) * std::cos(l); }, 1., 3.);
       check_relative("Euler-Bernoulli root of 1 + cosh(l) cos(l) = 0", l_eb, 1.875104, 1e-6, 7);
-      const double w_eb = euler_bernoulli_omega(l_eb);
+      const double w_eb = beam.euler_bernoulli_omega(l_eb);
       log() << "Euler-Bernoulli first frequency (information): " << std::setprecision(5)
             << w_eb / (2 * M_PI) << " Hz" << std::endl;
 
       // Huang's equation with r = s = 0 must reduce to Euler-Bernoulli.
       const double w_huang_eb = first_root(
-        [](const double w) { return huang_clamped_free(w, 0., 0.); }, 0.5 * w_eb, 1.5 * w_eb);
+        [](const double w) { return beam.huang(w, 0., 0.); }, 0.5 * w_eb, 1.5 * w_eb);
       check_relative("Huang's equation with r = s = 0: l = sqrt(b)",
-                     std::sqrt(std::sqrt(rho * A * w_huang_eb * w_huang_eb *
-                                         std::pow(length, 4) / (E * I))),
+                     std::sqrt(std::sqrt(rho * beam.area() * w_huang_eb * w_huang_eb *
+                                         std::pow(length, 4) / (E * beam.inertia()))),
                      l_eb, 1e-10, 7);
 
       // Timoshenko: Huang's equation against shooting on the ODEs.
       const double w_huang = first_root(
-        [&](const double w) { return huang_clamped_free(w, r2, s2); }, 0.5 * w_eb, 1.5 * w_eb);
+        [&](const double w) { return beam.huang(w, r2, s2); }, 0.5 * w_eb, 1.5 * w_eb);
       const double w_shoot =
-        first_root(shooting_clamped_free, 0.5 * w_eb, 1.5 * w_eb, 100);
+        first_root([](const double w) { return beam.shooting(w); }, 0.5 * w_eb, 1.5 * w_eb, 100);
       check_relative("Timoshenko first frequency [Hz], Huang's equation vs shooting",
                      w_huang / (2 * M_PI), w_shoot / (2 * M_PI), 1e-8, 6);
       const double f_ref = w_huang / (2 * M_PI);

@@ -14,9 +14,10 @@ namespace archdam::analysis
                       "file's name without extension.",
                       Patterns::Anything());
     prm.add_parameter("Stages", stages,
-                      "Stages to run, in this order: static (gravity), dynamic "
-                      "(ground motion, starting from the static state).",
-                      Patterns::MultipleSelection("static|dynamic"));
+                      "Stages to run, in this order: static (gravity), modal "
+                      "(natural frequencies and mode shapes, see Modal analysis), "
+                      "dynamic (ground motion, starting from the static state).",
+                      Patterns::MultipleSelection("static|modal|dynamic"));
   }
 
   bool

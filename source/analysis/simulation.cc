@@ -41,6 +41,8 @@ namespace archdam::analysis
       setup_model();
     if (p.analysis.runs("static"))
       run_static_stage();
+    if (p.analysis.runs("modal"))
+      run_modal_stage();
     if (p.analysis.runs("dynamic"))
       run_dynamic_stage();
     write_summary();

@@ -32,6 +32,7 @@ namespace archdam
     section("Ground motion", [&] { ground_motion.add_parameters(prm); });
     section("Static loads", [&] { static_loads.add_parameters(prm); });
     section("Analysis", [&] { analysis.add_parameters(prm); });
+    section("Modal analysis", [&] { modal.add_parameters(prm); });
     section("Monitors", [&] { monitors.add_parameters(prm); });
     section("Output", [&] { output.add_parameters(prm); });
   }

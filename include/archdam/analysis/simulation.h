@@ -1,5 +1,6 @@
 #pragma once
 
+#include <archdam/analysis/modal_analysis.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_faces.h>
 #include <archdam/loads/ground_motion.h>
@@ -21,8 +22,8 @@ namespace archdam::analysis
 {
   /**
    * One case from start to end (architecture.md §1): the model is built once
-   * (mesh, DOFs, M, K, loads), then the stages run in order, static (gravity)
-   * and dynamic (ground motion from the static state), each writing its
+   * (mesh, DOFs, M, K, loads), then the stages run in order, static (gravity),
+   * modal (natural modes) and dynamic (ground motion from the static state), each writing its
    * results; summary.json is written at the end.
    */
   class Simulation
@@ -71,6 +72,12 @@ namespace archdam::analysis
       AssertThrow(history, dealii::ExcMessage("There are histories only after a dynamic stage."));
       return *history;
     }
+    /// The natural modes of the modal stage (empty before it ran).
+    const NaturalModes &
+    natural_modes() const
+    {
+      return modes;
+    }
     const output::Monitors &
     monitors() const
     {
@@ -80,6 +87,8 @@ namespace archdam::analysis
   private:
     void
     run_static_stage();
+    void
+    run_modal_stage();
     void
     run_dynamic_stage();
     /// summary.json, and the peaks on screen.
@@ -106,6 +115,7 @@ namespace archdam::analysis
     Vector                                   static_load, u_static;
     std::array<Vector, dim>                  influence_load;
     time::NewmarkState                       current;
+    NaturalModes                             modes;
     std::unique_ptr<output::Monitors>        monitor;
     std::unique_ptr<output::HistoryWriter>   history;
     std::unique_ptr<output::FieldWriter>     fields;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/analysis/analysis_parameters.h>
+#include <archdam/analysis/modal_analysis.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/geometry/mesh.h>
 #include <archdam/joints/joint_parameters.h>
@@ -38,6 +39,7 @@ namespace archdam
     loads::GroundMotionParameters            ground_motion;
     loads::StaticLoadParameters              static_loads;
     analysis::AnalysisParameters             analysis;
+    analysis::ModalParameters                modal;
     output::MonitorParameters                monitors;
     output::OutputParameters                 output;
 

@@ -1,0 +1,66 @@
+#include <archdam/analysis/simulation.h>
+#include <archdam/output/mode_shapes.h>
+
+#include <iomanip>
+
+namespace archdam::analysis
+{
+  using namespace dealii;
+
+  /**
+   * Modal stage (numerics.md §6, step 2): the lowest natural frequencies and
+   * mode shapes of the model as built (foundation and reservoir models
+   * included through M and K), with each mode's effective modal mass in the
+   * three directions, Gamma_d^2 for the mass-normalized shape, as a fraction
+   * of the mass that can move in that direction (the fixed DOFs excluded).
+   */
+  void
+  Simulation::run_modal_stage()
+  {
+    {
+      TimerOutput::Scope t(timer, "modal");
+      modes = compute_natural_modes(mass_matrix, stiffness_matrix, fe_space->constraints,
+                                    p.modal);
+    }
+    for (auto &shape : modes.shapes)
+      fe_space->constraints.distribute(shape);
+
+    std::array<double, dim> moving_mass;
+    for (unsigned int d = 0; d < dim; ++d)
+      moving_mass[d] = influence_load[d].mean_value() * influence_load[d].size();
+
+    screen << "Modal stage: " << modes.omega.size() << " modes (largest relative residual "
+           << std::scientific << std::setprecision(1) << modes.max_residual
+           << std::defaultfloat << ")" << std::endl
+           << "  mode  f [Hz]    T [s]     effective mass x, y, z [%]" << std::endl;
+    std::array<double, dim> cumulative{};
+    for (unsigned int k = 0; k < modes.omega.size(); ++k)
+      {
+        const double f     = modes.omega[k] / (2. * numbers::PI);
+        const auto   gamma = participation_factors(modes.shapes[k], influence_load);
+        const std::string key = "modal/mode " + std::to_string(k + 1) + "/";
+        summary.set(key + "frequency [Hz]", f);
+        summary.set(key + "period [s]", 1. / f);
+        screen << "  " << std::setw(4) << k + 1 << "  " << std::fixed << std::setprecision(4)
+               << std::setw(8) << f << "  " << std::setw(8) << 1. / f << " ";
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double ratio = moving_mass[d] > 0 ? gamma[d] * gamma[d] / moving_mass[d] : 0.;
+            cumulative[d] += ratio;
+            summary.set(key + "effective mass ratio " + std::string(1, "xyz"[d]), ratio);
+            screen << " " << std::setw(6) << std::setprecision(1) << 100 * ratio;
+          }
+        screen << std::defaultfloat << std::endl;
+      }
+    for (unsigned int d = 0; d < dim; ++d)
+      summary.set("modal/cumulative effective mass ratio " + std::string(1, "xyz"[d]),
+                  cumulative[d]);
+    summary.set("modal/largest relative residual", modes.max_residual);
+
+    if (p.modal.write_mode_shapes)
+      {
+        TimerOutput::Scope t(timer, "output");
+        output::write_mode_shapes(p.output.directory, *fe_space, modes);
+      }
+  }
+} // namespace archdam::analysis

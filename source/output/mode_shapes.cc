@@ -1,0 +1,48 @@
+#include <archdam/output/mode_shapes.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <fstream>
+
+namespace archdam::output
+{
+  using namespace dealii;
+
+  void
+  write_mode_shapes(const std::string &directory, const fe::FESpace &space,
+                    const analysis::NaturalModes &modes)
+  {
+    std::vector<std::string> names(dim, "mode_shape");
+    names.emplace_back("mode_pressure");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+    interp.push_back(DataComponentInterpretation::component_is_scalar);
+
+    dealii::Vector<float> material(space.dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        material(cell->active_cell_index()) = cell->material_id();
+
+    std::vector<std::pair<double, std::string>> records;
+    for (unsigned int k = 0; k < modes.shapes.size(); ++k)
+      {
+        Vector shape;
+        space.reinit_ghosted(shape);
+        shape = modes.shapes[k];
+
+        DataOut<dim> data_out;
+        data_out.attach_dof_handler(space.dof_handler);
+        data_out.add_data_vector(shape, names, DataOut<dim>::type_dof_data, interp);
+        data_out.add_data_vector(material, "material_id");
+        data_out.build_patches(space.degree);
+        records.emplace_back(k + 1,
+                             data_out.write_vtu_with_pvtu_record(directory + "/", "modes", k + 1,
+                                                                 space.comm, 5, 0));
+      }
+    if (Utilities::MPI::this_mpi_process(space.comm) == 0)
+      {
+        std::ofstream pvd(directory + "/modes.pvd");
+        DataOutBase::write_pvd_record(pvd, records);
+      }
+  }
+} // namespace archdam::output
