@@ -47,15 +47,20 @@ namespace archdam::loads
       std::ifstream in(filename);
       if (!in)
         throw InputError(where(filename) + "the file cannot be read.");
-      if (in.peek() == std::ifstream::traits_type::eof())
-        throw InputError(where(filename) + "the file is empty.");
       return in;
+    }
+
+    void
+    check_not_empty(std::istream &in, const std::string &filename)
+    {
+      if (in.peek() == std::istream::traits_type::eof())
+        throw InputError(where(filename) + "the file is empty.");
     }
 
     /// After the last getline(): a read error must not pass for the end of
     /// the file, which would silently truncate the record.
     void
-    check_read_to_end(const std::ifstream &in,
+    check_read_to_end(const std::istream  &in,
                       const std::string   &filename,
                       const unsigned int   lines_read)
     {
@@ -91,17 +96,23 @@ namespace archdam::loads
       return x;
     }
 
-    /// @p word, which must be a number, read from line @p line of @p filename.
+    /// @p word, which must be a number, read from line @p line of @p filename
+    /// and multiplied by @p factor (unit conversion and scale factor); the
+    /// product must be a finite number too.
     double
     number(const std::string &word,
            const std::string &filename,
-           const unsigned int line)
+           const unsigned int line,
+           const double       factor = 1.)
     {
       const std::optional<double> x = to_real(word);
       if (!x)
         throw InputError(where(filename, line) + "'" + word +
                          "' is not a number.");
-      return *x;
+      if (!std::isfinite(*x * factor))
+        throw InputError(where(filename, line) + "'" + word +
+                         "' is out of range once converted to m/s^2.");
+      return *x * factor;
     }
 
     /// @p word as an integer, if all of it is one.
@@ -171,6 +182,15 @@ namespace archdam::loads
   read_at2(const std::string &filename, const double scale)
   {
     std::ifstream in = open_record(filename);
+    return read_at2(in, filename, scale);
+  }
+
+
+
+  AccelerationRecord
+  read_at2(std::istream &in, const std::string &filename, const double scale)
+  {
+    check_not_empty(in, filename);
 
     // PEER header: title; event, date, station, component; units; NPTS, DT.
     std::string  line;
@@ -190,8 +210,8 @@ namespace archdam::loads
       {
         ++line_number;
         for (const std::string &word : split(line))
-          record.values.push_back(number(word, filename, line_number) *
-                                  standard_gravity * scale);
+          record.values.push_back(
+            number(word, filename, line_number, standard_gravity * scale));
       }
     check_read_to_end(in, filename, line_number);
     if (record.values.size() != npts)
@@ -213,8 +233,20 @@ namespace archdam::loads
                   const double       to_si,
                   const double       scale)
   {
-    Assert(to_si > 0, dealii::ExcMessage("The unit factor must be positive."));
     std::ifstream in = open_record(filename);
+    return read_two_column(in, filename, to_si, scale);
+  }
+
+
+
+  AccelerationRecord
+  read_two_column(std::istream      &in,
+                  const std::string &filename,
+                  const double       to_si,
+                  const double       scale)
+  {
+    Assert(to_si > 0, dealii::ExcMessage("The unit factor must be positive."));
+    check_not_empty(in, filename);
 
     AccelerationRecord record;
     record.source = filename;
@@ -231,13 +263,13 @@ namespace archdam::loads
                            "expected 2 columns (time, acceleration), found " +
                            std::to_string(words.size()) + ".");
         const double t = number(words[0], filename, line_number);
-        const double a = number(words[1], filename, line_number);
+        const double a = number(words[1], filename, line_number, to_si * scale);
         if (!record.times.empty() && t <= record.times.back())
           throw InputError(where(filename, line_number) + "time " + words[0] +
                            " s is not later than the time on the previous "
                            "data line; times must increase strictly.");
         record.times.push_back(t);
-        record.values.push_back(a * to_si * scale);
+        record.values.push_back(a);
       }
     check_read_to_end(in, filename, line_number);
     if (record.times.size() < 2)
@@ -255,12 +287,25 @@ namespace archdam::loads
                      const double       to_si,
                      const double       scale)
   {
+    std::ifstream in = open_record(filename);
+    return read_single_column(in, filename, dt, to_si, scale);
+  }
+
+
+
+  AccelerationRecord
+  read_single_column(std::istream      &in,
+                     const std::string &filename,
+                     const double       dt,
+                     const double       to_si,
+                     const double       scale)
+  {
     Assert(to_si > 0, dealii::ExcMessage("The unit factor must be positive."));
     if (!(dt > 0) || !std::isfinite(dt))
       throw InputError(where(filename) + "the time step of a single-column "
                        "file must be positive, it is " +
                        format_number(dt) + " s.");
-    std::ifstream in = open_record(filename);
+    check_not_empty(in, filename);
 
     std::vector<double> values;
     std::string         line;
@@ -277,8 +322,7 @@ namespace archdam::loads
                            std::to_string(words.size()) +
                            "; a file of time-acceleration pairs needs "
                            "Format = two-column.");
-        values.push_back(number(words[0], filename, line_number) * to_si *
-                         scale);
+        values.push_back(number(words[0], filename, line_number, to_si * scale));
       }
     check_read_to_end(in, filename, line_number);
     if (values.size() < 2)

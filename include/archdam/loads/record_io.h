@@ -3,6 +3,7 @@
 #include <archdam/base/input_error.h>
 #include <archdam/loads/acceleration_record.h>
 
+#include <istream>
 #include <string>
 
 /**
@@ -27,6 +28,9 @@ namespace archdam::loads
    */
   AccelerationRecord
   read_at2(const std::string &filename, const double scale = 1.0);
+  /// The same from a stream; @p filename names it in messages.
+  AccelerationRecord
+  read_at2(std::istream &in, const std::string &filename, const double scale = 1.0);
 
   /**
    * Read a two-column text file "time acceleration", columns separated by
@@ -38,6 +42,12 @@ namespace archdam::loads
   read_two_column(const std::string &filename,
                   const double       to_si,
                   const double       scale = 1.0);
+  /// The same from a stream; @p filename names it in messages.
+  AccelerationRecord
+  read_two_column(std::istream      &in,
+                  const std::string &filename,
+                  const double       to_si,
+                  const double       scale = 1.0);
 
   /**
    * Read a single-column text file: one acceleration per line, sample k at
@@ -47,6 +57,13 @@ namespace archdam::loads
    */
   AccelerationRecord
   read_single_column(const std::string &filename,
+                     const double       dt,
+                     const double       to_si,
+                     const double       scale = 1.0);
+  /// The same from a stream; @p filename names it in messages.
+  AccelerationRecord
+  read_single_column(std::istream      &in,
+                     const std::string &filename,
                      const double       dt,
                      const double       to_si,
                      const double       scale = 1.0);
