@@ -1,6 +1,8 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/ids.h>
+#include <archdam/geometry/mesh_report.h>
+#include <archdam/output/mesh_writer.h>
 #include <archdam/physics/solid/solid_operators.h>
 
 #include <deal.II/base/utilities.h>
@@ -27,15 +29,7 @@ namespace archdam::analysis
   Simulation::run()
   {
     screen << "ArchDam: case '" << p.analysis.case_name << "'" << std::endl;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::error_code ec;
-        std::filesystem::create_directories(p.output.directory, ec);
-        if (ec)
-          throw InputError("Output/Directory: cannot create '" + p.output.directory +
-                           "': " + ec.message() + ".");
-      }
-    MPI_Barrier(comm);
+    create_output_directory();
 
     if (!fe_space)
       setup_model();
@@ -52,11 +46,59 @@ namespace archdam::analysis
   }
 
   void
+  Simulation::create_output_directory()
+  {
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(p.output.directory, ec);
+        if (ec)
+          throw InputError("Output/Directory: cannot create '" + p.output.directory +
+                           "': " + ec.message() + ".");
+      }
+    MPI_Barrier(comm);
+  }
+
+  void
+  Simulation::build_mesh(Triangulation<dim> &model)
+  {
+    geometry::build_model_mesh(p.mesh, p.base_directory, model);
+    const auto report = geometry::make_mesh_report(model, p.finite_element.degree);
+    if (screen.is_active())
+      report.print(screen.get_stream());
+    report.add_to(summary);
+  }
+
+  void
+  Simulation::run_mesh_only()
+  {
+    screen << "ArchDam: case '" << p.analysis.case_name << "', mesh only" << std::endl;
+    create_output_directory();
+    Triangulation<dim> model;
+    build_mesh(model);
+    summary.set("case", p.analysis.case_name);
+    summary.set("model/cells", model.n_active_cells());
+    summary.set("model/mpi processes", Utilities::MPI::n_mpi_processes(comm));
+    summary.set("model/element degree", p.finite_element.degree);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        output::write_mesh_vtu(model, p.output.directory + "/mesh");
+        summary.write(p.output.directory + "/summary.json");
+        screen << "Wrote " << p.output.directory << "/mesh.vtu, mesh_boundary.vtu and "
+               << "summary.json" << std::endl;
+      }
+    MPI_Barrier(comm);
+  }
+
+  void
   Simulation::setup_model()
   {
     TimerOutput::Scope t(timer, "setup");
+    Triangulation<dim> model;
+    build_mesh(model);
     // The reservoir is empty until the water physics exists (numerics.md §4).
-    geometry::create_mesh(p.mesh, triangulation, false);
+    geometry::remove_water(model);
+    triangulation.copy_triangulation(model);
     joint_faces = joints::pair_joint_faces(triangulation);
     fe_space    = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
     fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {

@@ -18,7 +18,7 @@ namespace archdam
   {
     const char *usage =
       "Usage:\n"
-      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]...\n"
+      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only]\n"
       "  archdam --print-parameters [text|json|xml|latex]\n"
       "  archdam --help\n";
 
@@ -43,6 +43,7 @@ namespace archdam
 
       std::string              case_file;
       std::vector<std::string> overrides;
+      bool                     mesh_only = false;
       for (unsigned int i = 0; i < args.size(); ++i)
         if (args[i] == "--set")
           {
@@ -52,6 +53,8 @@ namespace archdam
           }
         else if (args[i].rfind("--set=", 0) == 0)
           overrides.push_back(args[i].substr(6));
+        else if (args[i] == "--mesh-only")
+          mesh_only = true;
         else if (args[i].rfind("-", 0) == 0)
           throw InputError("Unknown option '" + args[i] + "'.\n" + usage);
         else if (case_file.empty())
@@ -64,7 +67,10 @@ namespace archdam
 
       const Parameters      p = read_parameters(case_file, overrides);
       analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
-      simulation.run();
+      if (mesh_only)
+        simulation.run_mesh_only();
+      else
+        simulation.run();
       return 0;
     }
   } // namespace

@@ -1,10 +1,13 @@
 #include <archdam/base/input_error.h>
+#include <archdam/geometry/gmsh_mesh.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>
+#include <archdam/geometry/mesh_checks.h>
 #include <archdam/geometry/splitter.h>
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <filesystem>
 #include <set>
 
 namespace archdam::geometry
@@ -18,67 +21,93 @@ namespace archdam::geometry
                       "Where the mesh comes from: box = a concrete block on a "
                       "rock block (tests and examples); arch dam = the parametric "
                       "double-curvature arch dam in its canyon with rock and "
-                      "reservoir (doc/arch-dam-geometry.md).",
-                      Patterns::Selection("box|arch dam"));
+                      "reservoir (doc/arch-dam-geometry.md); gmsh = a hexahedral "
+                      "mesh read from Mesh/Gmsh/File (doc/user-guide.md).",
+                      Patterns::Selection("box|arch dam|gmsh"));
     box.add_parameters(prm);
     prm.enter_subsection("Arch dam");
     arch_dam.add_parameters(prm);
     prm.leave_subsection();
+    prm.enter_subsection("Gmsh");
+    prm.add_parameter("File", gmsh_file,
+                      "The ASCII .msh file (format 2.x or 4.1, hexahedra) of Source = "
+                      "gmsh, relative to the case file's directory. Physical volumes "
+                      "are material ids (1 rock, 2 water, 10 + k dam block k), physical "
+                      "surfaces boundary ids (0-5); a solid face outside every physical "
+                      "surface is traction-free (0).");
+    prm.leave_subsection();
   }
 
-  namespace
-  {
-    /// The solid part of a mesh: water cells removed; the faces they covered
-    /// become traction-free (id 0), all others keep their ids.
-    void
-    remove_water(Triangulation<dim> &mesh)
-    {
-      std::set<Triangulation<dim>::active_cell_iterator> water;
-      for (const auto &cell : mesh.active_cell_iterators())
-        if (cell->material_id() == ids::water)
-          water.insert(cell);
-      if (water.empty())
-        return;
-      Triangulation<dim> solid;
-      GridGenerator::create_triangulation_with_removed_cells(mesh, water, solid);
-      // The remaining cells keep their order: copy the boundary ids across.
-      auto old_cell = mesh.begin_active();
-      for (const auto &cell : solid.active_cell_iterators())
-        {
-          while (old_cell->material_id() == ids::water)
-            ++old_cell;
-          for (const unsigned int f : cell->face_indices())
-            if (cell->at_boundary(f))
-              cell->face(f)->set_boundary_id(old_cell->at_boundary(f) ?
-                                               old_cell->face(f)->boundary_id() :
-                                               ids::free_surface_solid);
-          ++old_cell;
-        }
-      mesh.clear();
-      mesh.copy_triangulation(solid);
-    }
-  } // namespace
 
   void
-  create_mesh(const MeshParameters &p, parallel::shared::Triangulation<dim> &tria,
-              const bool keep_water)
+  remove_water(Triangulation<dim> &mesh)
   {
-    Triangulation<dim> serial;
-    if (p.source == "arch dam")
-      generate_arch_dam(p.arch_dam, serial);
-    else
-      generate_box(p.box, serial);
-    if (!keep_water)
-      remove_water(serial);
+    std::set<Triangulation<dim>::active_cell_iterator> water;
+    for (const auto &cell : mesh.active_cell_iterators())
+      if (cell->material_id() == ids::water)
+        water.insert(cell);
+    if (water.empty())
+      return;
+    Triangulation<dim> solid;
+    GridGenerator::create_triangulation_with_removed_cells(mesh, water, solid);
+    // The remaining cells keep their order: copy the boundary ids across.
+    auto old_cell = mesh.begin_active();
+    for (const auto &cell : solid.active_cell_iterators())
+      {
+        while (old_cell->material_id() == ids::water)
+          ++old_cell;
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              const bool kept = old_cell->at_boundary(f) &&
+                                old_cell->face(f)->boundary_id() != ids::solid_interface;
+              cell->face(f)->set_boundary_id(kept ? old_cell->face(f)->boundary_id() :
+                                                    ids::free_surface_solid);
+            }
+        ++old_cell;
+      }
+    mesh.clear();
+    mesh.copy_triangulation(solid);
+  }
 
+  void
+  build_model_mesh(const MeshParameters &p, const std::string &base_directory,
+                   Triangulation<dim> &model)
+  {
+    Triangulation<dim> conforming;
+    if (p.source == "arch dam")
+      generate_arch_dam(p.arch_dam, conforming);
+    else if (p.source == "gmsh")
+      {
+        if (p.gmsh_file.empty())
+          throw InputError("Mesh/Gmsh/File: no file given for Mesh/Source = gmsh.");
+        const std::filesystem::path file(p.gmsh_file);
+        read_gmsh(file.is_absolute() ? file.string() :
+                                       (std::filesystem::path(base_directory) / file).string(),
+                  conforming);
+      }
+    else
+      generate_box(p.box, conforming);
+
+    check_cell_shapes(conforming);
+    check_model_ids(conforming);
     unsigned int n_dam_cells = 0;
-    for (const auto &cell : serial.active_cell_iterators())
+    for (const auto &cell : conforming.active_cell_iterators())
       n_dam_cells += ids::is_dam(cell->material_id());
     if (n_dam_cells == 0)
       throw InputError("Mesh: the mesh has no dam cells (material id 10 + k).");
 
-    Triangulation<dim> split;
-    split_interfaces(serial, split);
-    tria.copy_triangulation(split);
+    split_interfaces(conforming, model);
+  }
+
+  void
+  create_mesh(const MeshParameters &p, parallel::shared::Triangulation<dim> &tria,
+              const bool keep_water, const std::string &base_directory)
+  {
+    Triangulation<dim> model;
+    build_model_mesh(p, base_directory, model);
+    if (!keep_water)
+      remove_water(model);
+    tria.copy_triangulation(model);
   }
 } // namespace archdam::geometry

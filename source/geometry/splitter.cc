@@ -114,9 +114,17 @@ namespace archdam::geometry
                   const auto id = interface_id(old_cell, old_cell->neighbor(f),
                                                old_cell->face(f)->center());
                   // The face came apart, so its cells use different copies of
-                  // some vertex: they differ in water/solid or in block.
-                  AssertThrow(id != numbers::internal_face_boundary_id,
-                              ExcInternalError());
+                  // some vertex: they differ in water/solid or in block. If
+                  // they do not, the cells around this face are not connected
+                  // as their shared vertices say (a cell with its nodes in a
+                  // tangled order, which overlaps its neighbours).
+                  if (id == numbers::internal_face_boundary_id)
+                    throw InputError("Mesh: the cells around " +
+                                     where(old_cell->face(f)->center()) +
+                                     " share vertices but not their faces: a cell there "
+                                     "has its nodes in a tangled order (it is twisted and "
+                                     "overlaps its neighbours). Check the node order of "
+                                     "the hexahedra there.");
                   cell->face(f)->set_boundary_id(id);
                 }
             }

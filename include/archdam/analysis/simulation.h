@@ -39,6 +39,12 @@ namespace archdam::analysis
     void
     setup_model();
 
+    /// `archdam CASE.prm --mesh-only`: build the model mesh, print its report,
+    /// write it to Output/Directory as mesh.vtu and mesh_boundary.vtu
+    /// (output/mesh_writer.h) with summary.json, and stop.
+    void
+    run_mesh_only();
+
     // What a run leaves behind, for tests and benchmarks.
     const fe::FESpace &
     space() const
@@ -85,6 +91,12 @@ namespace archdam::analysis
     }
 
   private:
+    void
+    create_output_directory();
+    /// The whole model mesh, water included (geometry::build_model_mesh()),
+    /// with its report printed and added to the summary.
+    void
+    build_mesh(dealii::Triangulation<dim> &model);
     void
     run_static_stage();
     void

@@ -7,6 +7,8 @@ namespace archdam
   /**
    * The `archdam` command (MPI must be initialized by the caller):
    *   archdam CASE.prm [--set "Section/Name=value"]...   run a case
+   *   archdam CASE.prm --mesh-only    build the model mesh, print its report,
+   *                                  write it as VTU with summary.json, stop
    *   archdam --print-parameters [text|json|xml|latex]  the parameter reference
  *                                  (text: a parameter file showing each entry's
  *                                  documentation, allowed values and default)

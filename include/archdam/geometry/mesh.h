@@ -15,6 +15,9 @@ namespace archdam::geometry
     std::string       source = "box";
     BoxParameters     box;
     ArchDamParameters arch_dam;
+    /// `Mesh/Gmsh/File`: the .msh file of `Source = gmsh` (relative to the
+    /// case file's directory).
+    std::string gmsh_file;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
@@ -31,5 +34,23 @@ namespace archdam::geometry
   void
   create_mesh(const MeshParameters                          &p,
               dealii::parallel::shared::Triangulation<dim> &tria,
-              bool                                          keep_water = true);
+              bool                                          keep_water = true,
+              const std::string                            &base_directory = ".");
+
+  /**
+   * The whole model, water included, as a serial mesh: generate or read the
+   * conforming mesh (relative Gmsh file names are resolved against
+   * @p base_directory), check its cell shapes and ids (mesh_checks.h) and
+   * split joints and fluid-solid interfaces (splitter.h).
+   */
+  void
+  build_model_mesh(const MeshParameters       &p,
+                   const std::string          &base_directory,
+                   dealii::Triangulation<dim> &model);
+
+  /// Leave the water cells out (empty reservoir): the solid faces they
+  /// covered (id 7 after splitting, or interior before it) become
+  /// traction-free (id 0); all other faces keep their ids.
+  void
+  remove_water(dealii::Triangulation<dim> &mesh);
 } // namespace archdam::geometry

@@ -1,0 +1,224 @@
+// Bad meshes end with one clear message and exit code 1 (issue 3, "errors"):
+// each case is a small edit of the Gmsh example (prm/gmsh_blocks_v2.msh) or a
+// small file a user could really produce, run through the command line with
+// --mesh-only. The test prints the exit code and the message as the user sees
+// it; the reference is that every case gives exit code 1 and names the
+// problem, and that the unedited example passes (exit code 0).
+//  - files that cannot be read: missing, not a .msh (the .geo), truncated,
+//    binary, an unsupported version;
+//  - an inverted cell (a node moved through the cell), a tangled node order
+//    (a twisted cell overlapping its neighbours) and a degenerate cell;
+//  - a material id no material defines (5, and 0: a cell outside every
+//    physical volume);
+//  - boundary ids: a water face without an id, a water id on a rock face, an
+//    id reserved for the splitter;
+//  - a joint face without a partner: two blocks meshed separately (coincident
+//    faces that share no nodes);
+//  - a physical surface inside the model (on a joint).
+
+#include <archdam/application/command_line.h>
+
+#include "archdam_tests.h"
+#include "gmsh_example.h"
+
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <vector>
+
+using archdam::testing::log;
+namespace ex = archdam::testing::gmsh_example;
+
+namespace
+{
+  std::string
+  read(const std::string &name)
+  {
+    std::ifstream      in(name);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+  }
+
+  void
+  write(const std::string &name, const std::string &text)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(name) << text;
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
+  /// The example's format-2.2 text with its element lines edited: @p edit
+  /// gets the fields of each element line (number, type, number of tags,
+  /// physical tag, entity tag, nodes...) and returns false to drop it.
+  std::string
+  edit_elements(const std::function<bool(std::vector<long> &)> &edit)
+  {
+    std::istringstream in(read(ex::v2));
+    std::ostringstream head, body;
+    std::string        line;
+    while (std::getline(in, line) && line != "$Elements")
+      head << line << "\n";
+    head << line << "\n";
+    unsigned int n, kept = 0;
+    in >> n;
+    std::getline(in, line);
+    for (unsigned int e = 0; e < n; ++e)
+      {
+        std::getline(in, line);
+        std::istringstream l(line);
+        std::vector<long>  f;
+        for (long v; l >> v;)
+          f.push_back(v);
+        if (!edit(f))
+          continue;
+        ++kept;
+        for (unsigned int i = 0; i < f.size(); ++i)
+          body << (i ? " " : "") << f[i];
+        body << "\n";
+      }
+    return head.str() + std::to_string(kept) + "\n" + body.str() + "$EndElements\n";
+  }
+
+  void
+  run(const std::string &what, const std::string &msh)
+  {
+    write("mesh_error.prm", "subsection Mesh\n  set Source = gmsh\n  subsection Gmsh\n"
+                            "    set File = " + msh + "\n  end\nend\n"
+                            "subsection Output\n  set Directory = mesh_error_results\nend\n");
+    const char        *args[] = {"archdam", "mesh_error.prm", "--mesh-only"};
+    std::ostringstream out, err;
+    const int          code = archdam::run_command_line(3, args, out, err);
+    log() << "* " << what << "\n  exit code " << code << "\n  " << err.str() << std::endl;
+  }
+
+  /// Two unit cubes side by side in x, each its own dam block, with 12 or 16
+  /// nodes: the 16-node file does not connect them.
+  std::string
+  two_blocks(const bool connected)
+  {
+    std::ostringstream s;
+    s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << (connected ? 12 : 16) << "\n";
+    unsigned int tag = 1;
+    std::vector<std::vector<unsigned int>> hex(2);
+    for (unsigned int c = 0; c < 2; ++c)
+      for (unsigned int k = 0; k < 2; ++k)
+        for (unsigned int j = 0; j < 2; ++j)
+          for (unsigned int i = 0; i < 2; ++i)
+            {
+              if (connected && c == 1 && i == 0)
+                {
+                  hex[c].push_back(hex[0][1 + 2 * j + 4 * k]); // the shared face's node
+                  continue;
+                }
+              s << tag << ' ' << c + i << ' ' << j << ' ' << k << "\n";
+              hex[c].push_back(tag++);
+            }
+    s << "$EndNodes\n$Elements\n2\n";
+    const unsigned int gmsh_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        s << c + 1 << " 5 2 " << 10 + c << " 1";
+        for (const unsigned int v : gmsh_order)
+          s << ' ' << hex[c][v];
+        s << "\n";
+      }
+    s << "$EndElements\n";
+    return s.str();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  run("the example itself (accepted)", ex::v2);
+  run("missing file", "no_such_mesh.msh");
+  write("script.geo", read(ex::directory + "gmsh_blocks.geo"));
+  run("not a .msh file (the .geo script)", "script.geo");
+  {
+    const std::string text = read(ex::v2);
+    write("truncated.msh", text.substr(0, text.size() / 2));
+    run("truncated file (first half of the example)", "truncated.msh");
+    std::string binary = text;
+    binary.replace(binary.find("2.2 0 8"), 7, "2.2 1 8");
+    write("binary.msh", binary);
+    run("binary .msh (header 2.2 1 8)", "binary.msh");
+    std::string old = text;
+    old.replace(old.find("2.2 0 8"), 7, "4.0 0 8");
+    write("version40.msh", old);
+    run("format 4.0", "version40.msh");
+  }
+
+  // the first dam hexahedron (physical tag 11, block 1) edited
+  const auto first_of = [](const long physical, const std::function<void(std::vector<long> &)> &f) {
+    bool done = false;
+    return edit_elements([&, physical](std::vector<long> &e) {
+      if (!done && e[1] == 5 && e[3] == physical)
+        {
+          f(e);
+          done = true;
+        }
+      return true;
+    });
+  };
+  write("tangled.msh", first_of(11, [](auto &e) { std::swap(e[5 + 6], e[5 + 7]); }));
+  run("a tangled hexahedron (two top nodes swapped)", "tangled.msh");
+  {
+    // node 26 of the example (the dam's downstream corner at (10, -15, 0))
+    // moved 10 m down, through the rock cell below it
+    std::string text = read(ex::v2);
+    const auto  at   = text.find("\n26 ");
+    const auto  end  = text.find('\n', at + 1);
+    std::istringstream node(text.substr(at + 1, end - at - 1));
+    double             tag, x, y, z;
+    node >> tag >> x >> y >> z;
+    text.replace(at + 1, end - at - 1,
+                 "26 " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(z - 10));
+    write("inverted.msh", text);
+    run("an inverted cell: node 26 moved 10 m down, through the rock cell below it", "inverted.msh");
+  }
+  write("degenerate.msh", first_of(11, [](auto &e) { e[5 + 7] = e[5 + 6]; }));
+  run("a degenerate hexahedron (two nodes the same)", "degenerate.msh");
+  write("material5.msh", first_of(1, [](auto &e) { e[3] = 5; }));
+  run("material id 5 (physical volume 5) on a rock cell", "material5.msh");
+  write("material0.msh", first_of(11, [](auto &e) { e[3] = 0; }));
+  run("a dam cell outside every physical volume (material id 0)", "material0.msh");
+
+  write("water_face_without_id.msh",
+        edit_elements([](std::vector<long> &e) { return !(e[1] == 3 && e[3] == 4); }));
+  run("the reservoir's upstream end without its physical surface 4", "water_face_without_id.msh");
+  bool changed = false;
+  write("water_id_on_rock.msh", edit_elements([&](std::vector<long> &e) {
+          if (!changed && e[1] == 3 && e[3] == 1)
+            {
+              e[3]    = 3;
+              changed = true;
+            }
+          return true;
+        }));
+  run("a rock bottom face in physical surface 3 (water free surface)", "water_id_on_rock.msh");
+  changed = false;
+  write("reserved_id.msh", edit_elements([&](std::vector<long> &e) {
+          if (!changed && e[1] == 3 && e[3] == 2)
+            {
+              e[3]    = 7;
+              changed = true;
+            }
+          return true;
+        }));
+  run("a rock side face in physical surface 7 (the splitter's id)", "reserved_id.msh");
+
+  write("connected_blocks.msh", two_blocks(true));
+  run("two dam blocks sharing their joint's nodes (accepted)", "connected_blocks.msh");
+  write("separate_blocks.msh", two_blocks(false));
+  run("two dam blocks meshed separately: joint faces without a partner", "separate_blocks.msh");
+  {
+    // a quadrilateral on the joint between the two connected blocks
+    std::string text = two_blocks(true);
+    text.replace(text.find("$Elements\n2\n"), 12, "$Elements\n3\n3 3 2 100 1 2 4 8 6\n");
+    write("joint_surface.msh", text);
+    run("a physical surface (100) on the joint, inside the model", "joint_surface.msh");
+  }
+}
