@@ -1,6 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/ids.h>
+#include <archdam/physics/reservoir/wetted_face_loads.h>
 #include <archdam/physics/solid/solid_operators.h>
 
 #include <deal.II/base/utilities.h>
@@ -53,14 +54,27 @@ namespace archdam::analysis
   Simulation::setup_model()
   {
     TimerOutput::Scope t(timer, "setup");
-    // The reservoir is empty until the water physics exists (numerics.md §4).
-    geometry::create_mesh(p.mesh, triangulation, false);
+    // The water cells stay unless the reservoir is empty (numerics.md §4);
+    // they carry the pressure only in the compressible and incompressible
+    // models.
+    namespace reservoir = physics::reservoir;
+    const auto water = p.reservoir.kind();
+    geometry::create_mesh(p.mesh, triangulation, water != reservoir::Model::none);
     joint_faces = joints::pair_joint_faces(triangulation);
     fe_space    = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
+    fe_space->pressure_in_water = p.reservoir.has_pressure();
     fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {
       // Contraction joints/Model = glued: the monolithic dam.
       joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant, c);
+      reservoir::constrain_free_surface(*fe_space, p.reservoir, c);
     });
+    if (p.reservoir.has_pressure())
+      {
+        interface_pairs = reservoir::match_interface_faces(*fe_space);
+        fe_space->add_couplings = [this](DynamicSparsityPattern &dsp) {
+          reservoir::add_interface_couplings(*fe_space, interface_pairs, dsp);
+        };
+      }
 
     unsigned int n_dam = 0, n_rock = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -73,6 +87,15 @@ namespace archdam::analysis
                                                         physics::solid::InertiaOf::dam;
     physics::solid::assemble_mass_and_stiffness(*fe_space, p.materials, inertia, mass_matrix,
                                                 stiffness_matrix);
+    const double level = reservoir::water_level(p.reservoir, triangulation);
+    if (water == reservoir::Model::westergaard)
+      reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
+    if (p.reservoir.has_pressure())
+      {
+        fluid_operators = std::make_unique<reservoir::FluidOperators>();
+        reservoir::assemble_fluid_operators(*fe_space, p.reservoir, p.static_loads.g,
+                                            interface_pairs, *fluid_operators);
+      }
 
     // Static load: self-weight b = -g e_z (numerics.md §6).
     Tensor<1, dim> gravity;
@@ -82,6 +105,9 @@ namespace archdam::analysis
                                             physics::solid::InertiaOf::dam_and_rock :
                                             physics::solid::InertiaOf::dam,
                                           gravity, static_load);
+    if (p.static_loads.hydrostatic && water != reservoir::Model::none)
+      reservoir::add_hydrostatic_load(*fe_space, p.reservoir.density, p.static_loads.g, level,
+                                      static_load);
     // Influence loads M iota_d of the relative formulation (numerics.md §5).
     for (unsigned int d = 0; d < dim; ++d)
       physics::solid::assemble_inertia_load(*fe_space, p.materials, inertia,
@@ -107,7 +133,11 @@ namespace archdam::analysis
     const Tensor<1, dim> ag = ground_motion->acceleration(t);
     for (unsigned int d = 0; d < dim; ++d)
       if (ag[d] != 0.)
-        load.add(-ag[d], influence_load[d]);
+        {
+          load.add(-ag[d], influence_load[d]);
+          if (coupled)
+            load.add(-ag[d], coupled->fluid_influence[d]);
+        }
   }
 
   void

@@ -8,6 +8,7 @@
 #include <archdam/output/monitors.h>
 #include <archdam/output/summary.h>
 #include <archdam/parameters/parameters.h>
+#include <archdam/physics/reservoir/coupled_system.h>
 #include <archdam/physics/solid/stress.h>
 #include <archdam/time/newmark.h>
 
@@ -54,6 +55,12 @@ namespace archdam::analysis
     {
       return stiffness_matrix;
     }
+    /// The water's operators (compressible and incompressible models only).
+    const physics::reservoir::FluidOperators *
+    fluid() const
+    {
+      return fluid_operators.get();
+    }
     const time::NewmarkState &
     state() const
     {
@@ -89,7 +96,8 @@ namespace archdam::analysis
     void
     write_fields();
 
-    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation);
+    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation), and
+    /// in the fluid rows of the coupled system -sum_d a_g,d(t) Phi S iota_d;
     /// F_static only if the static stage runs.
     void
     external_load(double t, Vector &load) const;
@@ -105,6 +113,9 @@ namespace archdam::analysis
     SparseMatrix                             mass_matrix, stiffness_matrix;
     Vector                                   static_load, u_static;
     std::array<Vector, dim>                  influence_load;
+    std::vector<physics::reservoir::InterfacePair>               interface_pairs;
+    std::unique_ptr<physics::reservoir::FluidOperators>          fluid_operators;
+    std::unique_ptr<physics::reservoir::CoupledSystem>           coupled;
     time::NewmarkState                       current;
     std::unique_ptr<output::Monitors>        monitor;
     std::unique_ptr<output::HistoryWriter>   history;

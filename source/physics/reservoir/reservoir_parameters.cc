@@ -1,0 +1,82 @@
+#include <archdam/physics/reservoir/reservoir_parameters.h>
+
+namespace archdam::physics::reservoir
+{
+  using namespace dealii;
+
+  void
+  ReservoirParameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.add_parameter("Model", model,
+                      "compressible = pressure in the water cells with the wave "
+                      "equation, radiation upstream and absorbing bottom "
+                      "(numerics.md §4, paper eq. 3.1-3.2); incompressible = the "
+                      "same with an infinite sound speed; westergaard = "
+                      "generalized Westergaard added mass on the wetted dam "
+                      "face, no water unknowns; none = empty reservoir.",
+                      Patterns::Selection("compressible|incompressible|westergaard|none"));
+    prm.add_parameter("Water density", density, "rho_w [kg/m^3].",
+                      Patterns::Double(0., Patterns::Double::max_double_value));
+    prm.add_parameter("Sound speed", sound_speed, "Speed of pressure waves c in water [m/s].",
+                      Patterns::Double(0., Patterns::Double::max_double_value));
+    prm.add_parameter("Bottom reflection coefficient", reflection,
+                      "Wave reflection coefficient alpha_r of the reservoir bottom "
+                      "and banks where no rock is meshed (boundary id 5): 1 = rigid, "
+                      "0 = fully absorbing.",
+                      Patterns::Double(0., 1.));
+    prm.add_parameter("Free surface", free_surface,
+                      "zero pressure (p = 0) or gravity waves "
+                      "((1/g) p_tt + dp/dn = 0).",
+                      Patterns::Selection("zero pressure|gravity waves"));
+    prm.add_parameter("Water level from mesh", level_from_mesh,
+                      "Take the water level from the top of the water cells (if "
+                      "the mesh has any) instead of 'Water level'.",
+                      Patterns::Bool());
+    prm.add_parameter("Water level", water_level,
+                      "Elevation z of the water surface [m], for the hydrostatic "
+                      "load and the Westergaard added mass, when not taken from "
+                      "the mesh.",
+                      Patterns::Double());
+  }
+
+  Model
+  ReservoirParameters::kind() const
+  {
+    if (model == "compressible")
+      return Model::compressible;
+    if (model == "incompressible")
+      return Model::incompressible;
+    if (model == "westergaard")
+      return Model::westergaard;
+    return Model::none;
+  }
+
+  double
+  ReservoirParameters::bottom_absorption() const
+  {
+    if (kind() != Model::compressible)
+      return 0.;
+    return (1. - reflection) / (sound_speed * (1. + reflection));
+  }
+} // namespace archdam::physics::reservoir
+
+#include <archdam/geometry/ids.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <limits>
+
+namespace archdam::physics::reservoir
+{
+  double
+  water_level(const ReservoirParameters &p, const dealii::Triangulation<dim> &mesh)
+  {
+    double top = -std::numeric_limits<double>::max();
+    for (const auto &cell : mesh.active_cell_iterators())
+      if (cell->material_id() == ids::water)
+        for (const unsigned int v : cell->vertex_indices())
+          top = std::max(top, cell->vertex(v)[dim - 1]);
+    const bool has_water = top > -std::numeric_limits<double>::max();
+    return p.level_from_mesh && has_water ? top : p.water_level;
+  }
+} // namespace archdam::physics::reservoir
