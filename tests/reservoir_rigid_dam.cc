@@ -17,8 +17,8 @@
 //    it under refinement, at every frequency 0 ... 3 omega_1 and every height;
 //  - the infinite channel (Chopra's series, verification.md), the physical
 //    reference: below 0.8 omega_1 the truncation at 3H changes the face
-//    pressure by less than e^{-2 kappa_1 L} = 0.35 %, so the FE must match the
-//    infinite series there; above the first resonance the Sommerfeld
+//    pressure by about e^{-2 kappa_1 L} (0.35 % at 0.8 omega_1, less below),
+//    so the FE must match the infinite series there within 0.5 %; above the first resonance the Sommerfeld
 //    condition reflects part of the propagating modes, and the difference
 //    between the truncated and infinite references is reported as what it is
 //    (a property of the truncation, not of the FE);
@@ -36,9 +36,10 @@
 //    water at the face (the coupling integrates on the finer side), and
 //    u^T S^T p gives the same.
 // Tolerances: the errors are measured relative to the largest |p| over the
-// heights at each frequency, maximized over the frequencies; the finest
-// meshes must be below the stated bounds (about twice the measured values)
-// and each refinement must reduce the error at least twofold.
+// heights at each frequency, maximized over the frequencies; on the finest
+// mesh (h = H/16) it must be below 0.1 % against the truncated channel with
+// either bottom (measured 1e-4 and 2e-5: Q2 converges as h^4 here), and each
+// refinement must reduce the error at least twofold.
 
 #include <archdam/physics/reservoir/fluid_operators.h>
 #include <archdam/physics/reservoir/harmonic_response.h>
@@ -259,9 +260,9 @@ main(int argc, char **argv)
         }
       if (n == 16)
         {
-          ok &= check_below("    finest mesh: error vs the truncated channel", err, 5e-3);
+          ok &= check_below("    finest mesh: error vs the truncated channel", err, 1e-3);
           ok &= check_below("    finest mesh: error vs the infinite channel below 0.8 omega_1",
-                            err_infinite_low, 1e-2);
+                            err_infinite_low, 5e-3);
           log() << "    truncation at 3H with the Sommerfeld condition vs the infinite "
                    "channel above 1.2 omega_1: "
                 << std::setprecision(2) << truncation_effect << std::endl;
@@ -294,7 +295,7 @@ main(int argc, char **argv)
       log() << "  mesh h = H/" << n << ": error vs the series with complex eigenvalues "
             << std::setprecision(2) << err << std::endl;
     }
-  ok &= check_below("  finest mesh: error", absorbing_errors.back(), 5e-3);
+  ok &= check_below("  finest mesh: error", absorbing_errors.back(), 1e-3);
   for (unsigned int i = 1; i < absorbing_errors.size(); ++i)
     ok &= check_below("  error ratio of mesh " + std::to_string(i + 1) + " to mesh " +
                         std::to_string(i),

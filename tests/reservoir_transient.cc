@@ -20,7 +20,9 @@
 // decayed long before: no wrap-around). Frequencies above 10 omega_1, where
 // the input spectrum is below 1e-6 of its peak, are left out. So the
 // comparison measures the spatial discretization only: the face pressure at
-// the heel and at mid-height must match within 2 % of the peak pressure.
+// the heel and at mid-height must match within 0.1 % of the peak pressure
+// (the frequency-domain error of this mesh, reservoir_rigid_dam, is 0.2 % at
+// worst near the resonance and far less where the input has its energy).
 //
 // Truncation. The same run with the reservoir truncated at 2H and at 4H
 // (Sommerfeld condition): the face pressure histories must differ by less
@@ -179,7 +181,7 @@ main(int argc, char **argv)
   log() << "  time domain vs frequency-domain synthesis: largest difference "
         << std::setprecision(2) << difference(fe, ref) << " of the peak" << std::endl;
   ok &= check_below("  time domain vs frequency-domain synthesis, relative to the peak",
-                    difference(fe, ref), 2e-2);
+                    difference(fe, ref), 1e-3);
 
   ch.L           = 2 * ch.H;
   const auto fe2 = fe_histories(ch, 8);

@@ -76,12 +76,14 @@ namespace archdam::analysis
         };
       }
 
-    unsigned int n_dam = 0, n_rock = 0;
+    unsigned int n_dam = 0, n_rock = 0, n_water = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
-      (ids::is_dam(cell->material_id()) ? n_dam : n_rock) += 1;
+      (ids::is_dam(cell->material_id())        ? n_dam :
+       cell->material_id() == ids::water ? n_water :
+                                                 n_rock) += 1;
     screen << "Mesh: " << triangulation.n_active_cells() << " cells (dam " << n_dam
-           << ", rock " << n_rock << "), " << fe_space->dof_handler.n_dofs() << " DOFs"
-           << std::endl;
+           << ", rock " << n_rock << (n_water > 0 ? ", water " + std::to_string(n_water) : "")
+           << "), " << fe_space->dof_handler.n_dofs() << " DOFs" << std::endl;
 
     const auto inertia = p.foundation.rock_has_mass() ? physics::solid::InertiaOf::dam_and_rock :
                                                         physics::solid::InertiaOf::dam;
