@@ -89,7 +89,8 @@ namespace archdam::analysis
                                                         physics::solid::InertiaOf::dam;
     physics::solid::assemble_mass_and_stiffness(*fe_space, p.materials, inertia, mass_matrix,
                                                 stiffness_matrix);
-    const double level = reservoir::water_level(p.reservoir, triangulation);
+    const double level =
+      water == reservoir::Model::none ? 0. : reservoir::water_level(p.reservoir, triangulation);
     if (water == reservoir::Model::westergaard)
       reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
     if (p.reservoir.has_pressure())

@@ -102,6 +102,7 @@ namespace archdam
     check(const Parameters &p)
     {
       p.time_integration.check();
+      p.reservoir.check();
       p.damping.rayleigh_coefficients();
       output::parse_monitor_points(p.monitors.points);
       if (p.analysis.stages.empty())

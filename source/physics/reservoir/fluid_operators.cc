@@ -97,11 +97,15 @@ namespace archdam::physics::reservoir
         for (const auto &hit : hits)
           {
             const auto &sf = solid[hit.second];
-            // Integrate on the smaller face; it must lie on the larger one.
+            // Integrate on the smaller face; all its vertices must lie on the
+            // larger one.
             const bool on_fluid = ff.area <= sf.area * (1 + 1e-8);
-            const bool inside =
-              on_fluid ? lies_on_face(sf.cell, sf.face, ff.cell->face(ff.face)->center()) :
-                         lies_on_face(ff.cell, ff.face, sf.cell->face(sf.face)->center());
+            const auto &small   = on_fluid ? ff : sf;
+            const auto &large   = on_fluid ? sf : ff;
+            bool        inside  = true;
+            for (const unsigned int v : small.cell->face(small.face)->vertex_indices())
+              inside = inside &&
+                       lies_on_face(large.cell, large.face, small.cell->face(small.face)->vertex(v));
             if (!inside)
               continue;
             pairs.push_back({ff.cell, ff.face, sf.cell, sf.face, on_fluid});

@@ -1,3 +1,4 @@
+#include <archdam/base/input_error.h>
 #include <archdam/physics/reservoir/reservoir_parameters.h>
 
 namespace archdam::physics::reservoir
@@ -39,6 +40,19 @@ namespace archdam::physics::reservoir
                       Patterns::Double());
   }
 
+  void
+  ReservoirParameters::check() const
+  {
+    if (kind() == Model::none)
+      return;
+    if (density <= 0)
+      throw InputError("Reservoir/Water density must be positive (it is " +
+                       std::to_string(density) + ").");
+    if (kind() == Model::compressible && sound_speed <= 0)
+      throw InputError("Reservoir/Sound speed must be positive for compressible water (it "
+                       "is " + std::to_string(sound_speed) + ").");
+  }
+
   Model
   ReservoirParameters::kind() const
   {
@@ -77,6 +91,18 @@ namespace archdam::physics::reservoir
         for (const unsigned int v : cell->vertex_indices())
           top = std::max(top, cell->vertex(v)[dim - 1]);
     const bool has_water = top > -std::numeric_limits<double>::max();
-    return p.level_from_mesh && has_water ? top : p.water_level;
+    if (p.kind() != Model::none && !has_water)
+      throw InputError("Reservoir/Model = " + p.model +
+                       " needs water cells (material id 2) in front of the dam, and the "
+                       "mesh has none (Mesh/Source = box has no reservoir; use the arch "
+                       "dam, or set Reservoir/Model = none).");
+    if (p.has_pressure() && !p.level_from_mesh &&
+        std::abs(p.water_level - top) > 1e-6 * std::max(1., std::abs(top)))
+      throw InputError("Reservoir/Water level = " + std::to_string(p.water_level) +
+                       " m, but the water cells reach z = " + std::to_string(top) +
+                       " m: with model " + p.model +
+                       " the water mesh defines the level (set 'Water level from mesh', "
+                       "or change the mesh's water level).");
+    return p.level_from_mesh ? top : p.water_level;
   }
 } // namespace archdam::physics::reservoir

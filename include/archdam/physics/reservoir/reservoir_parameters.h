@@ -29,6 +29,10 @@ namespace archdam::physics::reservoir
     void
     add_parameters(dealii::ParameterHandler &prm);
 
+    /// Throws InputError for values no water has (density or sound speed 0).
+    void
+    check() const;
+
     Model
     kind() const;
     /// Whether the water cells carry the pressure field.
@@ -57,6 +61,9 @@ namespace archdam::physics::reservoir
 {
   /// Elevation of the water surface: the top of the water cells when
   /// `Water level from mesh` is set and the mesh has water, else `Water level`.
+  /// Throws InputError if a model other than none finds no water cells (it
+  /// needs the wetted faces, ids 6/7), or if a model with pressure is given
+  /// a level other than the top of its water cells.
   double
   water_level(const ReservoirParameters &p, const dealii::Triangulation<dim> &mesh);
 } // namespace archdam::physics::reservoir
