@@ -75,6 +75,8 @@ namespace archdam::analysis
     current.v    = 0.;
     current.a    = 0.;
     history->append(monitor->evaluate(current));
+    if (pressure)
+      pressure->record(current);
 
     Vector     load;
     fe_space->reinit(load);
@@ -96,6 +98,8 @@ namespace archdam::analysis
         {
           TimerOutput::Scope t(timer, "dynamic: monitors");
           history->append(monitor->evaluate(current));
+          if (pressure)
+            pressure->record(current);
         }
         if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
           write_fields();
@@ -109,6 +113,8 @@ namespace archdam::analysis
           }
       }
     history->finish();
+    if (pressure)
+      pressure->finish();
 
     summary.set("dynamic/time step [s]", dt);
     summary.set("dynamic/steps", n_steps);

@@ -119,6 +119,10 @@ namespace archdam::analysis
     ground_motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
     fields  = std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials);
+    if (p.reservoir.has_pressure())
+      pressure = std::make_unique<output::PressureRecorder>(p.reservoir.pressure_points,
+                                                            p.reservoir.profile_times,
+                                                            *fe_space, p.output.directory);
 
     for (Vector *v : {&u_static, &current.u, &current.v, &current.a})
       fe_space->reinit(*v);

@@ -6,6 +6,7 @@
 #include <archdam/output/field_writer.h>
 #include <archdam/output/histories.h>
 #include <archdam/output/monitors.h>
+#include <archdam/output/pressure_recorder.h>
 #include <archdam/output/summary.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/physics/reservoir/coupled_system.h>
@@ -78,6 +79,13 @@ namespace archdam::analysis
       AssertThrow(history, dealii::ExcMessage("There are histories only after a dynamic stage."));
       return *history;
     }
+    /// The hydrodynamic pressure at the Reservoir/Pressure points (models
+    /// with pressure only).
+    const output::PressureRecorder *
+    pressures() const
+    {
+      return pressure.get();
+    }
     const output::Monitors &
     monitors() const
     {
@@ -119,6 +127,7 @@ namespace archdam::analysis
     time::NewmarkState                       current;
     std::unique_ptr<output::Monitors>        monitor;
     std::unique_ptr<output::HistoryWriter>   history;
+    std::unique_ptr<output::PressureRecorder> pressure;
     std::unique_ptr<output::FieldWriter>     fields;
     physics::solid::PeakStress               peak_stress{-1e300, {}};
     double                                   peak_stress_time = 0.;

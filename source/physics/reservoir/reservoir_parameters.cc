@@ -38,6 +38,17 @@ namespace archdam::physics::reservoir
                       "load and the Westergaard added mass, when not taken from "
                       "the mesh.",
                       Patterns::Double());
+    prm.add_parameter("Pressure points", pressure_points,
+                      "Named points in the water, 'name: x, y, z; ...' [m], "
+                      "e.g. along the dam face: their hydrodynamic pressure is "
+                      "written every step to pressure_histories.csv, and as a "
+                      "profile (one row per point) at the profile times with "
+                      "its envelope to pressure_profile.csv.",
+                      Patterns::Anything());
+    prm.add_parameter("Profile times", profile_times,
+                      "Times [s] of the pressure profile, comma-separated (the "
+                      "step nearest to each); the envelope is always written.",
+                      Patterns::List(Patterns::Double(0.), 0, 1000, ","));
   }
 
   void

@@ -25,6 +25,8 @@ namespace archdam::physics::reservoir
     std::string free_surface    = "zero pressure";
     bool        level_from_mesh = true;
     double      water_level     = 0.;
+    std::string pressure_points;
+    std::string profile_times;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
