@@ -50,9 +50,21 @@ namespace archdam::analysis
     std::unique_ptr<time::NewmarkIntegrator> newmark;
     {
       TimerOutput::Scope t(timer, "dynamic: factorization");
-      newmark = std::make_unique<time::NewmarkIntegrator>(p.time_integration, mass_matrix,
-                                                          stiffness_matrix, rayleigh,
-                                                          fe_space->constraints);
+      if (fluid_operators)
+        {
+          // The coupled dam-water system, symmetric indefinite (paper eq. 3.2).
+          coupled = std::make_unique<physics::reservoir::CoupledSystem>();
+          physics::reservoir::form_coupled_system(*fluid_operators, p.reservoir.density,
+                                                  p.time_integration.beta2, dt, mass_matrix,
+                                                  stiffness_matrix, rayleigh, *coupled);
+          newmark = std::make_unique<time::NewmarkIntegrator>(
+            p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
+            fe_space->constraints, false);
+        }
+      else
+        newmark = std::make_unique<time::NewmarkIntegrator>(p.time_integration, mass_matrix,
+                                                            stiffness_matrix, rayleigh,
+                                                            fe_space->constraints);
     }
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
@@ -63,6 +75,8 @@ namespace archdam::analysis
     current.v    = 0.;
     current.a    = 0.;
     history->append(monitor->evaluate(current));
+    if (pressure)
+      pressure->record(current);
 
     Vector     load;
     fe_space->reinit(load);
@@ -84,6 +98,8 @@ namespace archdam::analysis
         {
           TimerOutput::Scope t(timer, "dynamic: monitors");
           history->append(monitor->evaluate(current));
+          if (pressure)
+            pressure->record(current);
         }
         if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
           write_fields();
@@ -97,6 +113,8 @@ namespace archdam::analysis
           }
       }
     history->finish();
+    if (pressure)
+      pressure->finish();
 
     summary.set("dynamic/time step [s]", dt);
     summary.set("dynamic/steps", n_steps);

@@ -3,6 +3,7 @@
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh_report.h>
 #include <archdam/output/mesh_writer.h>
+#include <archdam/physics/reservoir/wetted_face_loads.h>
 #include <archdam/physics/solid/solid_operators.h>
 
 #include <deal.II/base/utilities.h>
@@ -94,29 +95,55 @@ namespace archdam::analysis
   Simulation::setup_model()
   {
     TimerOutput::Scope t(timer, "setup");
+    // The water cells stay unless the reservoir is empty (numerics.md §4);
+    // they carry the pressure only in the compressible and incompressible
+    // models.
+    namespace reservoir = physics::reservoir;
+    const auto         water = p.reservoir.kind();
     Triangulation<dim> model;
     build_mesh(model);
-    // The reservoir is empty until the water physics exists (numerics.md §4).
-    geometry::remove_water(model);
+    if (water == reservoir::Model::none)
+      geometry::remove_water(model);
     triangulation.copy_triangulation(model);
     joint_faces = joints::pair_joint_faces(triangulation);
     fe_space    = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
+    fe_space->pressure_in_water = p.reservoir.has_pressure();
     fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {
       // Contraction joints/Model = glued: the monolithic dam.
       joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant, c);
+      reservoir::constrain_free_surface(*fe_space, p.reservoir, c);
     });
+    if (p.reservoir.has_pressure())
+      {
+        interface_pairs = reservoir::match_interface_faces(*fe_space);
+        fe_space->add_couplings = [this](DynamicSparsityPattern &dsp) {
+          reservoir::add_interface_couplings(*fe_space, interface_pairs, dsp);
+        };
+      }
 
-    unsigned int n_dam = 0, n_rock = 0;
+    unsigned int n_dam = 0, n_rock = 0, n_water = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
-      (ids::is_dam(cell->material_id()) ? n_dam : n_rock) += 1;
+      (ids::is_dam(cell->material_id())        ? n_dam :
+       cell->material_id() == ids::water ? n_water :
+                                                 n_rock) += 1;
     screen << "Mesh: " << triangulation.n_active_cells() << " cells (dam " << n_dam
-           << ", rock " << n_rock << "), " << fe_space->dof_handler.n_dofs() << " DOFs"
-           << std::endl;
+           << ", rock " << n_rock << (n_water > 0 ? ", water " + std::to_string(n_water) : "")
+           << "), " << fe_space->dof_handler.n_dofs() << " DOFs" << std::endl;
 
     const auto inertia = p.foundation.rock_has_mass() ? physics::solid::InertiaOf::dam_and_rock :
                                                         physics::solid::InertiaOf::dam;
     physics::solid::assemble_mass_and_stiffness(*fe_space, p.materials, inertia, mass_matrix,
                                                 stiffness_matrix);
+    const double level =
+      water == reservoir::Model::none ? 0. : reservoir::water_level(p.reservoir, triangulation);
+    if (water == reservoir::Model::westergaard)
+      reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
+    if (p.reservoir.has_pressure())
+      {
+        fluid_operators = std::make_unique<reservoir::FluidOperators>();
+        reservoir::assemble_fluid_operators(*fe_space, p.reservoir, p.static_loads.g,
+                                            interface_pairs, *fluid_operators);
+      }
 
     // Static load: self-weight b = -g e_z (numerics.md §6).
     Tensor<1, dim> gravity;
@@ -126,6 +153,9 @@ namespace archdam::analysis
                                             physics::solid::InertiaOf::dam_and_rock :
                                             physics::solid::InertiaOf::dam,
                                           gravity, static_load);
+    if (p.static_loads.hydrostatic && water != reservoir::Model::none)
+      reservoir::add_hydrostatic_load(*fe_space, p.reservoir.density, p.static_loads.g, level,
+                                      static_load);
     // Influence loads M iota_d of the relative formulation (numerics.md §5).
     for (unsigned int d = 0; d < dim; ++d)
       physics::solid::assemble_inertia_load(*fe_space, p.materials, inertia,
@@ -134,6 +164,10 @@ namespace archdam::analysis
     ground_motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
     fields  = std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials);
+    if (p.reservoir.has_pressure())
+      pressure = std::make_unique<output::PressureRecorder>(p.reservoir.pressure_points,
+                                                            p.reservoir.profile_times,
+                                                            *fe_space, p.output.directory);
 
     for (Vector *v : {&u_static, &current.u, &current.v, &current.a})
       fe_space->reinit(*v);
@@ -151,7 +185,11 @@ namespace archdam::analysis
     const Tensor<1, dim> ag = ground_motion->acceleration(t);
     for (unsigned int d = 0; d < dim; ++d)
       if (ag[d] != 0.)
-        load.add(-ag[d], influence_load[d]);
+        {
+          load.add(-ag[d], influence_load[d]);
+          if (coupled)
+            load.add(-ag[d], coupled->fluid_influence[d]);
+        }
   }
 
   void

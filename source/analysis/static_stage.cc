@@ -18,8 +18,15 @@ namespace archdam::analysis
   {
     {
       TimerOutput::Scope   t(timer, "static");
+      // With water, K + Q + G: the water rows are only there to be
+      // nonsingular and carry no load, so the hydrodynamic pressure stays 0.
+      SparseMatrix with_water;
+      if (fluid_operators)
+        physics::reservoir::linear_combination(with_water, {{1., &stiffness_matrix},
+                                                            {1., &fluid_operators->Q},
+                                                            {1., &fluid_operators->G}});
       time::FactorizedOperator stiffness_factor;
-      stiffness_factor.factorize(stiffness_matrix, true);
+      stiffness_factor.factorize(fluid_operators ? with_water : stiffness_matrix, true);
       Vector rhs = static_load;
       fe_space->constraints.set_zero(rhs);
       stiffness_factor.solve(u_static, rhs);

@@ -31,10 +31,12 @@ namespace archdam::fe
   {
     fe_collection.push_back(FESystem<dim>(FE_Q<dim>(degree), dim, FE_Nothing<dim>(), 1));
     fe_collection.push_back(FESystem<dim>(FE_Nothing<dim>(), dim, FE_Q<dim>(degree), 1));
-    q_collection.push_back(QGauss<dim>(degree + 1));
-    q_collection.push_back(QGauss<dim>(degree + 1));
-    face_q_collection.push_back(QGauss<dim - 1>(degree + 1));
-    face_q_collection.push_back(QGauss<dim - 1>(degree + 1));
+    fe_collection.push_back(FESystem<dim>(FE_Nothing<dim>(), dim, FE_Nothing<dim>(), 1));
+    for (unsigned int i = 0; i < fe_collection.size(); ++i)
+      {
+        q_collection.push_back(QGauss<dim>(degree + 1));
+        face_q_collection.push_back(QGauss<dim - 1>(degree + 1));
+      }
   }
 
   void
@@ -43,8 +45,9 @@ namespace archdam::fe
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(cell->material_id() == ids::water ? fluid_index :
-                                                                      solid_index);
+        cell->set_active_fe_index(cell->material_id() != ids::water ? solid_index :
+                                  pressure_in_water                 ? fluid_index :
+                                                                      inert_index);
     dof_handler.distribute_dofs(fe_collection);
 
     locally_owned = dof_handler.locally_owned_dofs();
@@ -76,6 +79,8 @@ namespace archdam::fe
     rows.compress();
     DynamicSparsityPattern dsp(rows);
     DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+    if (add_couplings)
+      add_couplings(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, locally_owned, comm, rows);
     matrix.reinit(locally_owned, locally_owned, dsp, comm);
   }

@@ -17,5 +17,10 @@ namespace archdam::loads
                       "Also apply the self-weight of the rock (usually not: its "
                       "in-situ stress predates the dam).",
                       Patterns::Bool());
+    prm.add_parameter("Hydrostatic pressure", hydrostatic,
+                      "Apply the hydrostatic water pressure on the wetted dam "
+                      "face and rock up to the water level (Reservoir section), "
+                      "unless the reservoir model is none.",
+                      Patterns::Bool());
   }
 } // namespace archdam::loads

@@ -29,6 +29,7 @@ namespace archdam
     section("Time integration", [&] { time_integration.add_parameters(prm); });
     section("Foundation", [&] { foundation.add_parameters(prm); });
     section("Contraction joints", [&] { joints.add_parameters(prm); });
+    section("Reservoir", [&] { reservoir.add_parameters(prm); });
     section("Ground motion", [&] { ground_motion.add_parameters(prm); });
     section("Static loads", [&] { static_loads.add_parameters(prm); });
     section("Analysis", [&] { analysis.add_parameters(prm); });
@@ -102,6 +103,7 @@ namespace archdam
     check(const Parameters &p)
     {
       p.time_integration.check();
+      p.reservoir.check();
       p.damping.rayleigh_coefficients();
       output::parse_monitor_points(p.monitors.points);
       if (p.analysis.stages.empty())

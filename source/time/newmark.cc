@@ -66,6 +66,36 @@ namespace archdam::time
       v->reinit(owned, M.get_mpi_communicator());
   }
 
+  NewmarkIntegrator::NewmarkIntegrator(const NewmarkParameters         &p,
+                                       const SparseMatrix              &mass,
+                                       const SparseMatrix              &damping,
+                                       const SparseMatrix              &stiffness,
+                                       const AffineConstraints<double> &constraints,
+                                       const bool                       positive_definite)
+    : p(p)
+    , dt(p.time_step)
+    , M(mass)
+    , K(stiffness)
+    , D(&damping)
+    , alpha(0.)
+    , beta(0.)
+    , constraints(constraints)
+  {
+    // Kbar = M + beta1 dt D + beta2 dt^2 K on the common pattern.
+    effective_matrix.reinit(K);
+    effective_matrix.copy_from(K);
+    effective_matrix *= p.beta2 * dt * dt;
+    for (const auto &[c, A] : {std::pair{1., &M}, {p.beta1 * dt, D}})
+      AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), c, static_cast<Mat>(*A),
+                          SAME_NONZERO_PATTERN) == 0,
+                  ExcMessage("PETSc MatAXPY failed."));
+    effective_operator.factorize(effective_matrix, positive_definite);
+
+    const IndexSet owned = M.locally_owned_range_indices();
+    for (Vector *v : {&up, &vp, &rhs, &tmp, &da})
+      v->reinit(owned, M.get_mpi_communicator());
+  }
+
   void
   NewmarkIntegrator::advance(const Vector &load_next, NewmarkState &s)
   {
@@ -85,6 +115,11 @@ namespace archdam::time
     tmp.add(beta, vp);
     K.vmult(da, tmp);
     rhs -= da;
+    if (D != nullptr)
+      {
+        D->vmult(da, vp);
+        rhs -= da;
+      }
     constraints.set_zero(rhs);
 
     effective_operator.solve(da, rhs);

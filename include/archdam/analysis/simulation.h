@@ -7,8 +7,10 @@
 #include <archdam/output/field_writer.h>
 #include <archdam/output/histories.h>
 #include <archdam/output/monitors.h>
+#include <archdam/output/pressure_recorder.h>
 #include <archdam/output/summary.h>
 #include <archdam/parameters/parameters.h>
+#include <archdam/physics/reservoir/coupled_system.h>
 #include <archdam/physics/solid/stress.h>
 #include <archdam/time/newmark.h>
 
@@ -61,6 +63,12 @@ namespace archdam::analysis
     {
       return stiffness_matrix;
     }
+    /// The water's operators (compressible and incompressible models only).
+    const physics::reservoir::FluidOperators *
+    fluid() const
+    {
+      return fluid_operators.get();
+    }
     const time::NewmarkState &
     state() const
     {
@@ -83,6 +91,13 @@ namespace archdam::analysis
     natural_modes() const
     {
       return modes;
+    }
+    /// The hydrodynamic pressure at the Reservoir/Pressure points (models
+    /// with pressure only).
+    const output::PressureRecorder *
+    pressures() const
+    {
+      return pressure.get();
     }
     const output::Monitors &
     monitors() const
@@ -110,7 +125,8 @@ namespace archdam::analysis
     void
     write_fields();
 
-    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation);
+    /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation), and
+    /// in the fluid rows of the coupled system -sum_d a_g,d(t) Phi S iota_d;
     /// F_static only if the static stage runs.
     void
     external_load(double t, Vector &load) const;
@@ -126,10 +142,14 @@ namespace archdam::analysis
     SparseMatrix                             mass_matrix, stiffness_matrix;
     Vector                                   static_load, u_static;
     std::array<Vector, dim>                  influence_load;
+    std::vector<physics::reservoir::InterfacePair>               interface_pairs;
+    std::unique_ptr<physics::reservoir::FluidOperators>          fluid_operators;
+    std::unique_ptr<physics::reservoir::CoupledSystem>           coupled;
     time::NewmarkState                       current;
     NaturalModes                             modes;
     std::unique_ptr<output::Monitors>        monitor;
     std::unique_ptr<output::HistoryWriter>   history;
+    std::unique_ptr<output::PressureRecorder> pressure;
     std::unique_ptr<output::FieldWriter>     fields;
     physics::solid::PeakStress               peak_stress{-1e300, {}};
     double                                   peak_stress_time = 0.;

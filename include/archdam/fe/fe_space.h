@@ -10,6 +10,7 @@
 #include <deal.II/hp/fe_collection.h>
 #include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <functional>
 #include <set>
@@ -30,13 +31,16 @@ namespace archdam::fe
    * over an hp::FECollection whose element 0 carries the displacement u
    * (dim components, FE_Q) in solid cells and element 1 the hydrodynamic
    * pressure p (one component) in water cells; the other field is FE_Nothing.
-   * Component layout is always (u_x, u_y, u_z, p).
+   * Component layout is always (u_x, u_y, u_z, p). Element 2 has no DOFs at
+   * all: water cells use it when the reservoir model carries no pressure
+   * (Westergaard added mass), so that the wetted faces keep their ids.
    */
   class FESpace
   {
   public:
     static constexpr unsigned int solid_index    = 0;
     static constexpr unsigned int fluid_index    = 1;
+    static constexpr unsigned int inert_index    = 2;
     static constexpr unsigned int pressure_comp  = dim;
     static constexpr unsigned int n_components   = dim + 1;
 
@@ -50,6 +54,9 @@ namespace archdam::fe
     setup(const std::set<dealii::types::boundary_id>                   &fixed_boundaries,
           const std::function<void(dealii::AffineConstraints<double> &)> &add_constraints = {});
 
+    /// Matrices get the couplings of the cells (with the constraints) and
+    /// those @p add_couplings adds, e.g. fluid-solid interface couplings
+    /// (physics/reservoir); every matrix of the model shares that pattern.
     void
     reinit(SparseMatrix &matrix) const;
     void
@@ -69,6 +76,11 @@ namespace archdam::fe
     dealii::AffineConstraints<double>           constraints;
     const dealii::FEValuesExtractors::Vector    displacement{0};
     const dealii::FEValuesExtractors::Scalar    pressure{pressure_comp};
+    /// Whether water cells carry the pressure (fluid_index) or nothing
+    /// (inert_index); set before setup().
+    bool                                        pressure_in_water = true;
+    /// Extra matrix couplings beyond the cells' own (set before reinit()).
+    std::function<void(dealii::DynamicSparsityPattern &)> add_couplings;
 
   };
 } // namespace archdam::fe

@@ -10,6 +10,7 @@ namespace archdam::loads
     bool   gravity         = true;
     double g               = 9.81;
     bool   gravity_on_rock = false;
+    bool   hydrostatic     = true;
 
     void
     add_parameters(dealii::ParameterHandler &prm);

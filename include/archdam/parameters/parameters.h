@@ -10,6 +10,7 @@
 #include <archdam/output/field_writer.h>
 #include <archdam/output/monitors.h>
 #include <archdam/physics/foundation/foundation.h>
+#include <archdam/physics/reservoir/reservoir_parameters.h>
 #include <archdam/physics/solid/damping.h>
 #include <archdam/physics/solid/materials.h>
 #include <archdam/time/newmark.h>
@@ -36,6 +37,7 @@ namespace archdam
     time::NewmarkParameters                  time_integration;
     physics::foundation::FoundationParameters foundation;
     joints::JointParameters                  joints;
+    physics::reservoir::ReservoirParameters  reservoir;
     loads::GroundMotionParameters            ground_motion;
     loads::StaticLoadParameters              static_loads;
     analysis::AnalysisParameters             analysis;

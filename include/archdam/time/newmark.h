@@ -53,6 +53,22 @@ namespace archdam::time
                       std::pair<double, double>                rayleigh,
                       const dealii::AffineConstraints<double> &constraints);
 
+    /**
+     * The same scheme for M a + D v + K u = F with a general damping matrix D
+     * (e.g. the coupled dam-water system, numerics.md §4, whose D holds the
+     * Rayleigh damping of the solid and the radiation of the water):
+     *   Kbar = M + beta1 dt D + beta2 dt^2 K,
+     *   Kbar da = F_{n+1} - M a_n - D v^p - K u^p.
+     * M, D and K share one sparsity pattern; Kbar must be symmetric, and is
+     * factorized once as Cholesky if @p positive_definite, else as LDL^T.
+     */
+    NewmarkIntegrator(const NewmarkParameters                 &p,
+                      const SparseMatrix                      &mass,
+                      const SparseMatrix                      &damping,
+                      const SparseMatrix                      &stiffness,
+                      const dealii::AffineConstraints<double> &constraints,
+                      bool                                     positive_definite);
+
     /// Advance @p s from t_n to t_{n+1} = t_n + dt under the load F_{n+1}.
     void
     advance(const Vector &load_next, NewmarkState &s);
@@ -68,6 +84,7 @@ namespace archdam::time
     const double                             dt;
     const SparseMatrix                      &M;
     const SparseMatrix                      &K;
+    const SparseMatrix                      *D = nullptr; // general damping, if any
     const double                             alpha, beta;
     const dealii::AffineConstraints<double> &constraints;
     SparseMatrix                             effective_matrix;

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/output/monitors.h>
+#include <archdam/time/newmark.h>
+
+#include <string>
+#include <vector>
+
+namespace archdam::output
+{
+  /**
+   * The hydrodynamic pressure at named points in the water (numerics.md §7):
+   * its history every step (`pressure_histories.csv`, rank 0 writes) and, on
+   * finish(), the profile over the points at the chosen times with the
+   * envelope (`pressure_profile.csv`: name, x, y, z, p at each time, max,
+   * min). The FE weights of each point are computed once; an evaluation
+   * gathers the few DOF values involved from their owners (one all-reduce).
+   */
+  class PressureRecorder
+  {
+  public:
+    /// Throws InputError if a point lies in no water cell.
+    PressureRecorder(const std::string &points, const std::string &profile_times,
+                     const fe::FESpace &space, const std::string &directory);
+
+    /// Pressure at each point for the nodal vector @p state.u.
+    std::vector<double>
+    evaluate(const Vector &u) const;
+
+    /// Evaluate and append a row at @p state.time.
+    void
+    record(const time::NewmarkState &state);
+
+    /// Write the profile CSV.
+    void
+    finish() const;
+
+    const std::vector<std::vector<double>> &
+    histories() const
+    {
+      return rows;
+    }
+
+  private:
+    struct Weights
+    {
+      std::vector<dealii::types::global_dof_index> dofs;
+      std::vector<double>                          value;
+    };
+    const fe::FESpace                &space;
+    std::vector<MonitorPoint>         points;
+    std::vector<double>               times;
+    std::vector<Weights>              weights;
+    std::string                       directory;
+    std::vector<std::vector<double>>  rows; // time, p_1 ... p_n
+  };
+} // namespace archdam::output

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <archdam/physics/reservoir/fluid_operators.h>
+
+#include <initializer_list>
+#include <utility>
+
+namespace archdam::physics::reservoir
+{
+  /// out = sum_k c_k A_k for matrices of one sparsity pattern.
+  void
+  linear_combination(SparseMatrix                                                  &out,
+                     std::initializer_list<std::pair<double, const SparseMatrix *>> terms);
+
+  /**
+   * The coupled dam-water system in the symmetric form of the paper's eq. 3.2
+   * (numerics.md §4). With Phi = -beta2 dt^2 / rho_w scaling the fluid rows,
+   *   M_c = [[M, 0], [Phi S, Phi G]],   D_c = [[alpha M + beta K, 0], [0, Phi H]],
+   *   K_c = [[K, -(1/rho_w) S^T], [0, Phi Q]]
+   * (unknowns (u, p)), so that Kbar = M_c + beta1 dt D_c + beta2 dt^2 K_c is
+   * symmetric (the off-diagonal blocks are both -beta2 dt^2/rho_w S) and
+   * indefinite (the fluid block is negative definite). It is constant, so it
+   * is factorized once (time/newmark.h, as LDL^T). The ground motion enters
+   * the fluid rows as -Phi sum_d a_g,d S iota_d (`fluid_influence[d]` holds
+   * Phi S iota_d).
+   */
+  struct CoupledSystem
+  {
+    SparseMatrix            mass, damping, stiffness;
+    std::array<Vector, dim> fluid_influence;
+  };
+
+  void
+  form_coupled_system(const FluidOperators      &ops,
+                      double                     density,
+                      double                     beta2,
+                      double                     dt,
+                      const SparseMatrix        &M,
+                      const SparseMatrix        &K,
+                      std::pair<double, double>  rayleigh,
+                      CoupledSystem             &system);
+} // namespace archdam::physics::reservoir

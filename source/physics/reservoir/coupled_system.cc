@@ -1,0 +1,46 @@
+#include <archdam/physics/reservoir/coupled_system.h>
+
+#include <deal.II/lac/exceptions.h>
+
+namespace archdam::physics::reservoir
+{
+  using namespace dealii;
+
+  void
+  linear_combination(SparseMatrix                                                  &out,
+                     std::initializer_list<std::pair<double, const SparseMatrix *>> terms)
+  {
+    // All matrices of the model share one pattern (fe::FESpace::reinit), so
+    // PETSc adds them entry by entry.
+    out.reinit(*terms.begin()->second);
+    out = 0.;
+    for (const auto &[c, A] : terms)
+      if (c != 0.)
+        AssertThrow(MatAXPY(out.petsc_matrix(), c, static_cast<Mat>(*A),
+                            SAME_NONZERO_PATTERN) == 0,
+                    ExcMessage("PETSc MatAXPY failed."));
+  }
+
+  void
+  form_coupled_system(const FluidOperators           &ops,
+                      const double                    density,
+                      const double                    beta2,
+                      const double                    dt,
+                      const SparseMatrix             &M,
+                      const SparseMatrix             &K,
+                      const std::pair<double, double> rayleigh,
+                      CoupledSystem                  &system)
+  {
+    const double phi = -beta2 * dt * dt / density; // paper eq. 3.2
+    linear_combination(system.mass, {{1., &M}, {phi, &ops.S}, {phi, &ops.G}});
+    linear_combination(system.damping,
+                       {{rayleigh.first, &M}, {rayleigh.second, &K}, {phi, &ops.H}});
+    linear_combination(system.stiffness,
+                       {{1., &K}, {-1. / density, &ops.S_transpose}, {phi, &ops.Q}});
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        system.fluid_influence[d] = ops.influence[d];
+        system.fluid_influence[d] *= phi;
+      }
+  }
+} // namespace archdam::physics::reservoir
