@@ -11,9 +11,12 @@
 //    initial (incident) energy, below 2 % for the MTF and the viscous boundary.
 //    The fixed boundary must reflect nearly all of it (the test can fail).
 // B. Seismic input: the control motion g at the free surface. The surface
-//    must move as g(t - H/c) (the free field, numerics.md §5) within 3 % of
-//    the peak (the dispersion of about 10 nodes per wavelength at the pulse's
-//    upper frequency 2/T, and the time step), and after the reflected pulse
+//    must move as g(t - H/c) (the free field, numerics.md §5) within 5 % of
+//    the peak: the average acceleration rule lengthens periods by
+//    (omega dt)^2/12, 0.4 % at the pulse's upper frequency 2/T = 33 Hz with
+//    dt = 1 ms, which over the ~15 periods of travel shifts its phase by some
+//    per cent of a period (Q2 cells of 5 m add less: 12 nodes per wavelength
+//    there); the boundary adds its own small error. After the reflected pulse
 //    has left through the bottom the energy left must again be below 2 % of
 //    the largest energy during the run (the incident energy).
 
@@ -136,7 +139,7 @@ main(int argc, char **argv)
           const Result a = run(component, boundary, false);
           testing::log() << name << ", " << boundary << " boundary, outgoing pulse: reflected "
                          << "energy fraction " << std::setprecision(1) << std::fixed
-                         << 100 * a.reflected << " %" << std::defaultfloat << std::endl;
+                         << 100 * a.reflected << " %" << std::defaultfloat << std::setprecision(6) << std::endl;
           if (boundary == "fixed")
             testing::log() << "  fixed boundary reflects more than 50 %: "
                            << (a.reflected > 0.5 ? "yes" : "NO") << std::endl;
@@ -147,12 +150,12 @@ main(int argc, char **argv)
         {
           const Result b = run(component, boundary, true);
           testing::log() << name << ", " << boundary << " boundary, seismic input:" << std::endl;
-          testing::check_below("  max |u_surface - g(t - H/c)| / max g", b.surface_error, 0.03);
+          testing::check_below("  max |u_surface - g(t - H/c)| / max g", b.surface_error, 0.05);
           testing::check_below("  energy left after the pulse / incident energy", b.reflected,
                                0.02);
           testing::log() << "  (surface error " << std::setprecision(1) << std::fixed
                          << 100 * b.surface_error << " %, energy left " << 100 * b.reflected
-                         << " %)" << std::defaultfloat << std::endl;
+                         << " %)" << std::defaultfloat << std::setprecision(6) << std::endl;
         }
     }
 }

@@ -91,7 +91,7 @@ namespace
                    << ", " << n_steps << " steps (" << std::setprecision(3) << n_steps * dt
                    << " s):" << std::endl
                    << "  max |u_i| over the first 1000 steps: " << std::setprecision(2)
-                   << std::scientific << early << " m" << std::defaultfloat << std::endl;
+                   << std::scientific << early << " m" << std::defaultfloat << std::setprecision(6) << std::endl;
     testing::check_below("  no growth: max |u_i| over the last 1000 steps / first", late / early,
                          1.);
     testing::check_below("  no drift: max |u_i| at the end / first", final_u / early, 0.01);

@@ -34,7 +34,7 @@ namespace archdam::physics::foundation
     /// component normal to the boundary, S for the tangential ones).
     double artificial_speed = 0.;
     /// gamma of the stabilized MTF, each j-th term times (1 + gamma)^(-j).
-    double stabilization = 0.02;
+    double stabilization = 0.01;
     /// R of the viscous-spring boundary in m; 0 = dashpots only.
     double spring_distance = 0.;
 
