@@ -68,8 +68,30 @@ namespace archdam::physics::foundation
               {
                 found.first = space.dof_handler.get_triangulation().end();
               }
-            const bool inside = found.first.state() == IteratorState::valid &&
-                                found.first->material_id() == ids::rock;
+            bool inside = found.first.state() == IteratorState::valid &&
+                          found.first->material_id() == ids::rock;
+            if (!inside)
+              {
+                // A node on the edge where the outer boundary meets a free
+                // surface (or the water) of curved or inclined shape: the
+                // normal runs close to that surface and x_j may lie just
+                // outside the rock. Take the nearest point of the rock cell at
+                // the node if it is close (a quarter of j c_a dt); a point far
+                // outside means the rock is too thin for the formula.
+                const auto at_node = GridTools::find_active_cell_around_point(cache, b.position);
+                if (at_node.first.state() == IteratorState::valid &&
+                    at_node.first->material_id() == ids::rock)
+                  {
+                    const Point<dim> unit = GeometryInfo<dim>::project_to_unit_cell(
+                      mapping.transform_real_to_unit_cell(at_node.first, x));
+                    if (mapping.transform_unit_to_real_cell(at_node.first, unit).distance(x) <
+                        0.25 * j * c_a * dt)
+                      {
+                        found  = {at_node.first, unit};
+                        inside = true;
+                      }
+                  }
+              }
             if (!inside)
               {
                 std::ostringstream msg;
