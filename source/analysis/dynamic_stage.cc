@@ -62,9 +62,9 @@ namespace archdam::analysis
             fe_space->constraints, false);
         }
       else
-        newmark = std::make_unique<time::NewmarkIntegrator>(p.time_integration, mass_matrix,
-                                                            stiffness_matrix, rayleigh,
-                                                            fe_space->constraints);
+        newmark = std::make_unique<time::NewmarkIntegrator>(
+          p.time_integration, mass_matrix, stiffness_matrix, rayleigh, fe_space->constraints,
+          massed_foundation ? massed_foundation->dashpots() : nullptr);
     }
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
@@ -77,6 +77,8 @@ namespace archdam::analysis
     history->append(monitor->evaluate(current));
     if (pressure)
       pressure->record(current);
+    if (massed_foundation)
+      massed_foundation->start(current.u);
 
     Vector     load;
     fe_space->reinit(load);
@@ -92,7 +94,10 @@ namespace archdam::analysis
         {
           TimerOutput::Scope t(timer, "dynamic: steps");
           external_load(n * dt, load);
-          newmark->advance(load, current);
+          if (massed_foundation)
+            massed_foundation->advance(*newmark, load, current);
+          else
+            newmark->advance(load, current);
           current.time = n * dt; // no drift from repeated additions
         }
         {
@@ -124,5 +129,8 @@ namespace archdam::analysis
     summary.set("dynamic/rayleigh alpha [s^-1]", rayleigh.first);
     summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
     summary.set("dynamic/wall time per step [s]", elapsed() / n_steps);
+    if (massed_foundation)
+      summary.set("dynamic/foundation boundary update per step [s]",
+                  massed_foundation->boundary_update_time() / n_steps);
   }
 } // namespace archdam::analysis

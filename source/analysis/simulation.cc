@@ -9,6 +9,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <filesystem>
+#include <limits>
 #include <iomanip>
 
 namespace archdam::analysis
@@ -162,6 +163,19 @@ namespace archdam::analysis
                                             Point<dim>::unit_vector(d), influence_load[d]);
 
     ground_motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
+    if (p.foundation.rock_has_mass())
+      {
+        // The boundary update (time::NewmarkIntegrator::advance with
+        // prescribed DOFs) carries the Rayleigh-damped solid columns only,
+        // not the coupled water system's.
+        if (p.reservoir.has_pressure())
+          throw InputError("Foundation/Model = massed with Reservoir/Model = " +
+                           p.reservoir.model +
+                           " is not supported yet: use the westergaard or none reservoir "
+                           "model with the massed foundation, or the massless foundation "
+                           "with water.");
+        setup_massed_foundation(inertia);
+      }
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
     fields  = std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials);
     if (p.reservoir.has_pressure())
@@ -182,6 +196,8 @@ namespace archdam::analysis
       load = static_load;
     else
       load = 0.;
+    if (massed_foundation) // total motion: the input enters at the boundary
+      return;
     const Tensor<1, dim> ag = ground_motion->acceleration(t);
     for (unsigned int d = 0; d < dim; ++d)
       if (ag[d] != 0.)
@@ -253,5 +269,42 @@ namespace archdam::analysis
 
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       summary.write(p.output.directory + "/summary.json");
+  }
+
+  void
+  Simulation::setup_massed_foundation(const physics::solid::InertiaOf inertia)
+  {
+    // The free surface of the half-space is the top of the rock, its bottom
+    // the model's (numerics.md §5).
+    double z_top = -std::numeric_limits<double>::max(), z_bottom = -z_top;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto v : cell->vertex_indices())
+        {
+          z_bottom = std::min(z_bottom, cell->vertex(v)[dim - 1]);
+          if (cell->material_id() == ids::rock)
+            z_top = std::max(z_top, cell->vertex(v)[dim - 1]);
+        }
+    free_field = std::make_unique<physics::foundation::FreeField>(
+      physics::foundation::FreeField::of_ground_motion(*ground_motion, p.materials.rock, z_top,
+                                                       z_bottom));
+    massed_foundation = std::make_unique<physics::foundation::MassedFoundation>(
+      p.foundation, *fe_space, p.materials, inertia, *free_field,
+      p.time_integration.time_step);
+    massed_foundation->add_springs(stiffness_matrix);
+    if (p.foundation.transmitting_boundary == "viscous" && p.foundation.spring_distance == 0. &&
+        p.analysis.runs("static"))
+      throw InputError("Foundation: the viscous boundary without springs (Spring distance = 0) "
+                       "does not support the model in the static stage; set Spring distance "
+                       "> 0, or use the MTF or the fixed boundary.");
+    screen << "Massed foundation: " << p.foundation.transmitting_boundary
+           << " boundary; free surface at z = " << z_top << " m, bottom at z = " << z_bottom
+           << " m; the ground motion reaches the surface after " << std::setprecision(4)
+           << free_field->delay(0) << " s (horizontal), " << free_field->delay(dim - 1)
+           << " s (vertical)";
+    if (const auto *mtf = massed_foundation->transmitting_boundary();
+        mtf && p.foundation.transmitting_boundary == "MTF")
+      screen << "; MTF order " << p.foundation.mtf_order << ", largest c_a dt / h = "
+             << mtf->largest_courant_number();
+    screen << std::endl;
   }
 } // namespace archdam::analysis

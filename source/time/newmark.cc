@@ -38,7 +38,8 @@ namespace archdam::time
                                        const SparseMatrix              &mass,
                                        const SparseMatrix              &stiffness,
                                        const std::pair<double, double>  rayleigh,
-                                       const AffineConstraints<double> &constraints)
+                                       const AffineConstraints<double> &constraints,
+                                       const Vector                    *boundary_dashpots)
     : p(p)
     , dt(p.time_step)
     , M(mass)
@@ -46,6 +47,7 @@ namespace archdam::time
     , alpha(rayleigh.first)
     , beta(rayleigh.second)
     , constraints(constraints)
+    , dashpots(boundary_dashpots)
   {
     // Kbar = (1 + alpha beta1 dt) M + (beta beta1 dt + beta2 dt^2) K  (eq. 2.4).
     // M and K share one sparsity pattern (solid_operators.cc), so PETSc can
@@ -59,10 +61,17 @@ namespace archdam::time
     AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), 1. + alpha * p.beta1 * dt,
                         static_cast<Mat>(M), SAME_NONZERO_PATTERN) == 0,
                 ExcMessage("PETSc MatAXPY failed."));
+    if (dashpots)
+      {
+        tmp.reinit(*dashpots);
+        tmp.equ(p.beta1 * dt, *dashpots);
+        AssertThrow(MatDiagonalSet(effective_matrix.petsc_matrix(), tmp, ADD_VALUES) == 0,
+                    ExcMessage("PETSc MatDiagonalSet failed."));
+      }
     effective_operator.factorize(effective_matrix, true);
 
     const IndexSet owned = M.locally_owned_range_indices();
-    for (Vector *v : {&up, &vp, &rhs, &tmp, &da})
+    for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_u, &reduced_load})
       v->reinit(owned, M.get_mpi_communicator());
   }
 
@@ -120,6 +129,12 @@ namespace archdam::time
         D->vmult(da, vp);
         rhs -= da;
       }
+    if (dashpots)
+      {
+        tmp = vp;
+        tmp.scale(*dashpots);
+        rhs -= tmp;
+      }
     constraints.set_zero(rhs);
 
     effective_operator.solve(da, rhs);
@@ -133,5 +148,51 @@ namespace archdam::time
     s.a += da;
     s.time += dt;
     ++s.step;
+  }
+
+  void
+  NewmarkIntegrator::advance(const Vector              &load_next,
+                             NewmarkState              &s,
+                             const PrescribedDofs      &prescribed,
+                             const std::vector<double> &u_next)
+  {
+    AssertDimension(u_next.size(), prescribed.dofs.size());
+    // State of the prescribed DOFs at t_{n+1} (eq. 2.1-2.2 with da_b fixed by u_next).
+    const IndexSet      &owned = s.u.locally_owned_elements();
+    std::vector<double> u1, v1, a1;
+    std::vector<types::global_dof_index> mine;
+    prescribed_a = 0.;
+    prescribed_u = 0.;
+    for (unsigned int k = 0; k < prescribed.dofs.size(); ++k)
+      {
+        const auto i = prescribed.dofs[k];
+        if (!owned.is_element(i))
+          continue;
+        const double up_i = s.u[i] + dt * s.v[i] + 0.5 * dt * dt * s.a[i];
+        const double da_i = (u_next[k] - up_i) / (p.beta2 * dt * dt);
+        mine.push_back(i);
+        u1.push_back(u_next[k]);
+        v1.push_back(s.v[i] + dt * s.a[i] + p.beta1 * dt * da_i);
+        a1.push_back(s.a[i] + da_i);
+        prescribed_a(i) = a1.back() + alpha * v1.back();
+        prescribed_u(i) = u1.back() + beta * v1.back();
+      }
+    prescribed_a.compress(VectorOperation::insert);
+    prescribed_u.compress(VectorOperation::insert);
+
+    reduced_load = load_next;
+    prescribed.mass_columns.vmult(tmp, prescribed_a);
+    reduced_load -= tmp;
+    prescribed.stiffness_columns.vmult(tmp, prescribed_u);
+    reduced_load -= tmp;
+    advance(reduced_load, s);
+
+    // advance() left the constrained DOFs at their predictors: set them.
+    for (Vector *v : {&s.u, &s.v, &s.a})
+      {
+        const std::vector<double> &values = v == &s.u ? u1 : v == &s.v ? v1 : a1;
+        v->set(mine, values);
+        v->compress(VectorOperation::insert);
+      }
   }
 } // namespace archdam::time

@@ -11,6 +11,7 @@
 #include <archdam/output/summary.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/physics/reservoir/coupled_system.h>
+#include <archdam/physics/foundation/massed_foundation.h>
 #include <archdam/physics/solid/stress.h>
 #include <archdam/time/newmark.h>
 
@@ -104,6 +105,12 @@ namespace archdam::analysis
     {
       return *monitor;
     }
+    /// Wall times and call counts of the stages.
+    const dealii::TimerOutput &
+    timers() const
+    {
+      return timer;
+    }
 
   private:
     void
@@ -125,9 +132,15 @@ namespace archdam::analysis
     void
     write_fields();
 
+    /// Massed foundation (numerics.md §5): free field from the ground motion
+    /// and the transmitting boundary.
+    void
+    setup_massed_foundation(physics::solid::InertiaOf inertia);
+
     /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation), and
     /// in the fluid rows of the coupled system -sum_d a_g,d(t) Phi S iota_d;
-    /// F_static only if the static stage runs.
+    /// F_static only if the static stage runs. With a massed foundation
+    /// (total motion) the ground motion enters at the boundary instead.
     void
     external_load(double t, Vector &load) const;
 
@@ -139,6 +152,9 @@ namespace archdam::analysis
     std::vector<joints::JointFacePair>       joint_faces;
     std::unique_ptr<fe::FESpace>             fe_space;
     std::unique_ptr<loads::GroundMotion>     ground_motion;
+    /// Massed foundation only: the free field and the outer boundary.
+    std::unique_ptr<physics::foundation::FreeField>        free_field;
+    std::unique_ptr<physics::foundation::MassedFoundation> massed_foundation;
     SparseMatrix                             mass_matrix, stiffness_matrix;
     Vector                                   static_load, u_static;
     std::array<Vector, dim>                  influence_load;

@@ -6,6 +6,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <vector>
+
 namespace archdam::time
 {
   /// The `Time integration` subsection (numerics.md §2).
@@ -33,6 +35,22 @@ namespace archdam::time
   };
 
   /**
+   * Prescribed motion on constrained DOFs (numerics.md §5: the outer boundary
+   * of a massed foundation). The DOFs are constrained (homogeneously) in the
+   * model's M and K, so Kbar keeps them fixed and stays factorized once; their
+   * coupling to the free DOFs is carried by the full (unconstrained) columns
+   * of M and K at these DOFs, assembled apart
+   * (solid::assemble_mass_and_stiffness_columns).
+   */
+  struct PrescribedDofs
+  {
+    /// The prescribed DOFs, the same list on every rank.
+    std::vector<dealii::types::global_dof_index> dofs;
+    /// Columns of the full M and K at `dofs` (rows at other DOFs are used).
+    SparseMatrix mass_columns, stiffness_columns;
+  };
+
+  /**
    * The generalized Newmark scheme of the paper's eq. 2.1-2.4 (numerics.md §2)
    * for M a + D v + K u = F with Rayleigh damping D = alpha M + beta K. With
    * the predictors
@@ -43,6 +61,8 @@ namespace archdam::time
    * and updates u = u^p + beta2 dt^2 da, v = v^p + beta1 dt da, a = a_n + da.
    * Kbar is constant: it is assembled and factorized once in the constructor,
    * and a step costs two matrix-vector products and one back-substitution.
+   * Optional @p boundary_dashpots c (a diagonal damping, the viscous boundary
+   * of the foundation) add beta1 dt diag(c) to Kbar and c v^p to the load.
    */
   class NewmarkIntegrator
   {
@@ -51,7 +71,8 @@ namespace archdam::time
                       const SparseMatrix                      &mass,
                       const SparseMatrix                      &stiffness,
                       std::pair<double, double>                rayleigh,
-                      const dealii::AffineConstraints<double> &constraints);
+                      const dealii::AffineConstraints<double> &constraints,
+                      const Vector *boundary_dashpots = nullptr);
 
     /**
      * The same scheme for M a + D v + K u = F with a general damping matrix D
@@ -73,6 +94,23 @@ namespace archdam::time
     void
     advance(const Vector &load_next, NewmarkState &s);
 
+    /**
+     * Advance with the displacements @p u_next (one per entry of
+     * @p prescribed.dofs) prescribed at t_{n+1}. Their acceleration increment
+     * follows from u_{n+1} = u^p + beta2 dt^2 da:
+     *   da_b = (u_next - u^p_b) / (beta2 dt^2),
+     * and with their state at t_{n+1} known, the free DOFs take the load
+     *   F_{n+1} - M_fb (a_b + alpha v_b) - K_fb (u_b + beta v_b)   (at t_{n+1})
+     * from the prescribed columns, which equals the full effective load minus
+     * Kbar_fb da_b. The solve itself is advance() with the DOFs fixed, so Kbar
+     * is not touched.
+     */
+    void
+    advance(const Vector              &load_next,
+            NewmarkState              &s,
+            const PrescribedDofs      &prescribed,
+            const std::vector<double> &u_next);
+
     double
     time_step() const
     {
@@ -89,6 +127,8 @@ namespace archdam::time
     const dealii::AffineConstraints<double> &constraints;
     SparseMatrix                             effective_matrix;
     FactorizedOperator                       effective_operator;
+    const Vector                            *dashpots = nullptr; // boundary dashpots, if any
     Vector                                   up, vp, rhs, tmp, da;
+    Vector                                   prescribed_a, prescribed_u, reduced_load;
   };
 } // namespace archdam::time

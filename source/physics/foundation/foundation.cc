@@ -1,6 +1,8 @@
 #include <archdam/geometry/ids.h>
 #include <archdam/physics/foundation/foundation.h>
 
+#include <cmath>
+
 namespace archdam::physics::foundation
 {
   using namespace dealii;
@@ -10,13 +12,56 @@ namespace archdam::physics::foundation
   {
     prm.add_parameter("Model", model,
                       "Foundation model: massless = rock stiffness without "
-                      "inertia, outer boundary fixed, uniform ground motion.",
-                      Patterns::Selection("massless"));
+                      "inertia, outer boundary fixed, uniform ground motion "
+                      "(relative formulation); massed = rock inertia, total "
+                      "motion, vertically propagating plane waves that "
+                      "reproduce the ground motion at the free surface, and "
+                      "the transmitting boundary below.",
+                      Patterns::Selection("massless|massed"));
+    prm.add_parameter("Transmitting boundary", transmitting_boundary,
+                      "Outer boundary (bottom and sides) of the massed "
+                      "foundation: MTF = Liao's multi-transmitting formula on "
+                      "the scattered motion; viscous = Lysmer dashpots (and "
+                      "springs, see Spring distance) with free-field forces; "
+                      "fixed = free-field motion prescribed (reflects).",
+                      Patterns::Selection("MTF|viscous|fixed"));
+    prm.add_parameter("MTF order", mtf_order,
+                      "Order N of the multi-transmitting formula.",
+                      Patterns::Integer(1, 4));
+    prm.add_parameter("Artificial speed", artificial_speed,
+                      "Artificial transmitting speed c_a of the MTF [m/s]; 0 = "
+                      "the rock's P-wave speed for the component normal to the "
+                      "boundary and its S-wave speed for the tangential ones.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Stabilization", stabilization,
+                      "Drift stabilization gamma of the MTF: the j-th term is "
+                      "multiplied by (1 + gamma)^(-j) (0.01 - 0.05 usual).",
+                      Patterns::Double(0., 0.5));
+    prm.add_parameter("Spring distance", spring_distance,
+                      "Distance R [m] from the scattering source to the viscous "
+                      "boundary; springs G/R (normal) and G/(2R) (tangential) "
+                      "per unit area are added to the dashpots; 0 = dashpots "
+                      "only.",
+                      Patterns::Double(0.));
   }
 
   std::set<types::boundary_id>
   FoundationParameters::fixed_boundaries() const
   {
-    return {ids::foundation_bottom, ids::foundation_sides};
+    if (prescribes_boundary_motion())
+      return {ids::foundation_bottom, ids::foundation_sides};
+    return {};
+  }
+
+  double
+  shear_wave_speed(const solid::ElasticMaterial &m)
+  {
+    return std::sqrt(m.mu() / m.density);
+  }
+
+  double
+  pressure_wave_speed(const solid::ElasticMaterial &m)
+  {
+    return std::sqrt((m.lambda() + 2 * m.mu()) / m.density);
   }
 } // namespace archdam::physics::foundation

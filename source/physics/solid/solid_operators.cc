@@ -3,7 +3,9 @@
 
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
 
 namespace archdam::physics::solid
 {
@@ -18,6 +20,77 @@ namespace archdam::physics::solid
     }
   } // namespace
 
+  namespace
+  {
+    /// Add the cell matrices of M and K of the solid cells for which
+    /// @p take(cell) holds, condensed with @p constraints, to the matrices.
+    template <typename CellFilter>
+    void
+    add_cell_matrices(const fe::FESpace               &space,
+                      const MaterialParameters        &materials,
+                      const InertiaOf                  inertia,
+                      const AffineConstraints<double> &constraints,
+                      const CellFilter                &take,
+                      SparseMatrix                    &mass,
+                      SparseMatrix                    &stiffness)
+    {
+      hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
+                                     update_values | update_gradients | update_JxW_values);
+      FullMatrix<double>                   cell_m, cell_k;
+      std::vector<types::global_dof_index> dofs;
+      std::vector<SymmetricTensor<2, dim>> eps;
+      std::vector<double>                  div;
+      std::vector<Tensor<1, dim>>          phi;
+
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
+          {
+            dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            if (!take(dofs))
+              continue;
+            hp_fe_values.reinit(cell);
+            const FEValues<dim>   &fv  = hp_fe_values.get_present_fe_values();
+            const unsigned int     n   = fv.dofs_per_cell;
+            const ElasticMaterial &mat = materials.of(cell->material_id());
+            const double rho = has_inertia(cell->material_id(), inertia) ? mat.density : 0.;
+            const double lambda = mat.lambda(), mu = mat.mu();
+
+            cell_m.reinit(n, n);
+            cell_k.reinit(n, n);
+            eps.resize(n);
+            div.resize(n);
+            phi.resize(n);
+            for (const unsigned int q : fv.quadrature_point_indices())
+              {
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    eps[i] = fv[space.displacement].symmetric_gradient(i, q);
+                    div[i] = fv[space.displacement].divergence(i, q);
+                    phi[i] = fv[space.displacement].value(i, q);
+                  }
+                const double dx = fv.JxW(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j <= i; ++j)
+                    {
+                      cell_m(i, j) += rho * phi[i] * phi[j] * dx;
+                      cell_k(i, j) += (lambda * div[i] * div[j] + 2 * mu * eps[i] * eps[j]) * dx;
+                    }
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = i + 1; j < n; ++j)
+                {
+                  cell_m(i, j) = cell_m(j, i);
+                  cell_k(i, j) = cell_k(j, i);
+                }
+            constraints.distribute_local_to_global(cell_m, dofs, mass);
+            constraints.distribute_local_to_global(cell_k, dofs, stiffness);
+          }
+      mass.compress(VectorOperation::add);
+      stiffness.compress(VectorOperation::add);
+    }
+  } // namespace
+
   void
   assemble_mass_and_stiffness(const fe::FESpace        &space,
                               const MaterialParameters &materials,
@@ -27,60 +100,59 @@ namespace archdam::physics::solid
   {
     space.reinit(stiffness);
     mass.reinit(stiffness); // the same pattern: Kbar = c1 M + c2 K relies on it
+    add_cell_matrices(space, materials, inertia, space.constraints,
+                      [](const std::vector<types::global_dof_index> &) { return true; },
+                      mass, stiffness);
+  }
 
-    hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
-                                   update_values | update_gradients | update_JxW_values);
-    FullMatrix<double>                   cell_m, cell_k;
+  void
+  assemble_mass_and_stiffness_columns(const fe::FESpace                          &space,
+                                      const MaterialParameters                   &materials,
+                                      const InertiaOf                             inertia,
+                                      const std::vector<types::global_dof_index> &columns,
+                                      SparseMatrix                               &mass,
+                                      SparseMatrix                               &stiffness)
+  {
+    std::vector<bool> is_column(space.dof_handler.n_dofs(), false);
+    for (const auto i : columns)
+      is_column[i] = true;
+    const auto touches = [&](const std::vector<types::global_dof_index> &dofs) {
+      for (const auto i : dofs)
+        if (is_column[i])
+          return true;
+      return false;
+    };
+
+    // The model's constraints without the lines of the columns themselves.
+    AffineConstraints<double> others(space.locally_relevant);
+    for (const auto &line : space.constraints.get_lines())
+      if (!is_column[line.index])
+        {
+          others.add_line(line.index);
+          others.add_entries(line.index, line.entries);
+          others.set_inhomogeneity(line.index, line.inhomogeneity);
+        }
+    others.close();
+
+    IndexSet rows = space.locally_relevant;
+    for (const auto &line : others.get_lines())
+      for (const auto &entry : line.entries)
+        rows.add_index(entry.first);
+    rows.compress();
+    DynamicSparsityPattern               dsp(rows);
     std::vector<types::global_dof_index> dofs;
-    std::vector<SymmetricTensor<2, dim>> eps;
-    std::vector<double>                  div;
-    std::vector<Tensor<1, dim>>          phi;
-
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
         {
-          hp_fe_values.reinit(cell);
-          const FEValues<dim>   &fv  = hp_fe_values.get_present_fe_values();
-          const unsigned int     n   = fv.dofs_per_cell;
-          const ElasticMaterial &mat = materials.of(cell->material_id());
-          const double rho = has_inertia(cell->material_id(), inertia) ? mat.density : 0.;
-          const double lambda = mat.lambda(), mu = mat.mu();
-
-          cell_m.reinit(n, n);
-          cell_k.reinit(n, n);
-          eps.resize(n);
-          div.resize(n);
-          phi.resize(n);
-          for (const unsigned int q : fv.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i] = fv[space.displacement].symmetric_gradient(i, q);
-                  div[i] = fv[space.displacement].divergence(i, q);
-                  phi[i] = fv[space.displacement].value(i, q);
-                }
-              const double dx = fv.JxW(q);
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j <= i; ++j)
-                  {
-                    cell_m(i, j) += rho * phi[i] * phi[j] * dx;
-                    cell_k(i, j) += (lambda * div[i] * div[j] + 2 * mu * eps[i] * eps[j]) * dx;
-                  }
-            }
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = i + 1; j < n; ++j)
-              {
-                cell_m(i, j) = cell_m(j, i);
-                cell_k(i, j) = cell_k(j, i);
-              }
-
-          dofs.resize(n);
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
           cell->get_dof_indices(dofs);
-          space.constraints.distribute_local_to_global(cell_m, dofs, mass);
-          space.constraints.distribute_local_to_global(cell_k, dofs, stiffness);
+          if (touches(dofs))
+            others.add_entries_local_to_global(dofs, dsp, false);
         }
-    mass.compress(VectorOperation::add);
-    stiffness.compress(VectorOperation::add);
+    SparsityTools::distribute_sparsity_pattern(dsp, space.locally_owned, space.comm, rows);
+    stiffness.reinit(space.locally_owned, space.locally_owned, dsp, space.comm);
+    mass.reinit(stiffness);
+    add_cell_matrices(space, materials, inertia, others, touches, mass, stiffness);
   }
 
   void

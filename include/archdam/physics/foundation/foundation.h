@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/base/types.h>
+#include <archdam/physics/solid/materials.h>
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -10,13 +11,32 @@
 namespace archdam::physics::foundation
 {
   /**
-   * The `Foundation` subsection (numerics.md §5). The massless foundation has
-   * stiffness only, a fixed outer boundary (bottom and sides) and the ground
-   * acceleration applied uniformly (relative formulation).
+   * The `Foundation` subsection (numerics.md §5).
+   *
+   * massless: stiffness only, outer boundary (bottom and sides) fixed, the
+   * ground acceleration applied uniformly (relative formulation).
+   *
+   * massed: rock inertia, total-motion formulation, seismic input as
+   * vertically propagating plane waves (free_field.h), and on the outer
+   * boundary one of
+   *  - MTF: Liao's multi-transmitting formula on the scattered motion
+   *    (multi_transmitting_boundary.h),
+   *  - viscous: Lysmer dashpots (and springs) with equivalent free-field
+   *    forces (viscous_boundary.h),
+   *  - fixed: the free-field motion prescribed (every outgoing wave reflects).
    */
   struct FoundationParameters
   {
-    std::string model = "massless";
+    std::string  model                = "massless";
+    std::string  transmitting_boundary = "MTF";
+    unsigned int mtf_order            = 2;
+    /// c_a in m/s; 0 = the rock's wave speed of each component (P for the
+    /// component normal to the boundary, S for the tangential ones).
+    double artificial_speed = 0.;
+    /// gamma of the stabilized MTF, each j-th term times (1 + gamma)^(-j).
+    double stabilization = 0.01;
+    /// R of the viscous-spring boundary in m; 0 = dashpots only.
+    double spring_distance = 0.;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
@@ -24,11 +44,28 @@ namespace archdam::physics::foundation
     bool
     rock_has_mass() const
     {
-      return false;
+      return model == "massed";
     }
 
-    /// Boundary ids whose displacement is fixed.
+    /// Whether the outer-boundary displacement is prescribed in the dynamic
+    /// stage (massless, or massed with MTF or fixed boundary).
+    bool
+    prescribes_boundary_motion() const
+    {
+      return !rock_has_mass() || transmitting_boundary != "viscous";
+    }
+
+    /// Boundary ids whose displacement is constrained (fixed in the static
+    /// stage; prescribed in the dynamic stage of a massed foundation).
     std::set<dealii::types::boundary_id>
     fixed_boundaries() const;
   };
+
+  /// Shear (S) wave speed sqrt(mu / rho) of a material, m/s.
+  double
+  shear_wave_speed(const solid::ElasticMaterial &m);
+
+  /// Compression (P) wave speed sqrt((lambda + 2 mu) / rho), m/s.
+  double
+  pressure_wave_speed(const solid::ElasticMaterial &m);
 } // namespace archdam::physics::foundation

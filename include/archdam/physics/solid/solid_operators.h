@@ -28,6 +28,21 @@ namespace archdam::physics::solid
                               SparseMatrix               &stiffness);
 
   /**
+   * The full (unconstrained) columns of M and K at the constrained DOFs
+   * @p columns: the entries of the cells touching them, condensed with the
+   * model's constraints other than the lines of @p columns. They carry the
+   * coupling of prescribed DOFs to the free ones (time::PrescribedDofs);
+   * their other entries are partial and never used.
+   */
+  void
+  assemble_mass_and_stiffness_columns(const fe::FESpace                                  &space,
+                                      const MaterialParameters                           &materials,
+                                      InertiaOf                                           inertia,
+                                      const std::vector<dealii::types::global_dof_index> &columns,
+                                      SparseMatrix                                       &mass,
+                                      SparseMatrix                                       &stiffness);
+
+  /**
    * The load of a uniform acceleration field b acting on the mass of the chosen
    * cells, F_i = int rho b . N_i. With b = -g e_z it is gravity; with b = e_d it
    * is the influence load M iota_d of the relative formulation (numerics.md §5),

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/physics/foundation/foundation.h>
+#include <archdam/physics/foundation/free_field.h>
+#include <archdam/physics/foundation/multi_transmitting_boundary.h>
+#include <archdam/physics/foundation/viscous_boundary.h>
+#include <archdam/physics/solid/solid_operators.h>
+#include <archdam/time/newmark.h>
+
+#include <memory>
+
+namespace archdam::physics::foundation
+{
+  /**
+   * The outer boundary of a massed foundation in the dynamic stage
+   * (numerics.md §5), whichever its kind: a step with the MTF (or the fixed
+   * boundary) prescribes the boundary displacements computed before the
+   * solve (time::PrescribedDofs); a step with the viscous boundary adds the
+   * free-field forces to the load, its dashpots being part of Kbar.
+   *
+   * Use: add_springs() to the stiffness before anything is factorized, make
+   * the integrator with dashpots(), start() from the initial state, then
+   * advance() every step.
+   */
+  class MassedFoundation
+  {
+  public:
+    MassedFoundation(const FoundationParameters      &p,
+                     const fe::FESpace               &space,
+                     const solid::MaterialParameters &materials,
+                     solid::InertiaOf                 inertia,
+                     const FreeField                 &free_field,
+                     double                           time_step);
+
+    /// The springs of the viscous-spring boundary (nothing for the others).
+    void
+    add_springs(SparseMatrix &stiffness) const;
+
+    /// The dashpots of the viscous boundary for the integrator, else nullptr.
+    const Vector *
+    dashpots() const;
+
+    /// The dynamic stage starts at rest from @p u0 at t = 0.
+    void
+    start(const Vector &u0);
+
+    /// One step from t_n to t_{n+1} under the load @p load_next (no
+    /// free-field terms in it) at t_{n+1}.
+    void
+    advance(time::NewmarkIntegrator &newmark, const Vector &load_next, time::NewmarkState &s);
+
+    /// Wall time spent in the boundary update (MTF values and history, or
+    /// free-field forces), s.
+    double
+    boundary_update_time() const
+    {
+      return update_seconds;
+    }
+
+    const MultiTransmittingBoundary *
+    transmitting_boundary() const
+    {
+      return mtf.get();
+    }
+
+  private:
+    std::unique_ptr<MultiTransmittingBoundary> mtf;
+    std::unique_ptr<ViscousSpringBoundary>     viscous;
+    time::PrescribedDofs                       prescribed;
+    Vector                                     load;
+    double                                     dt;
+    double                                     update_seconds = 0.;
+  };
+} // namespace archdam::physics::foundation

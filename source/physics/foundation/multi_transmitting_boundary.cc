@@ -1,0 +1,184 @@
+#include <archdam/base/input_error.h>
+#include <archdam/geometry/ids.h>
+#include <archdam/physics/foundation/multi_transmitting_boundary.h>
+
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace archdam::physics::foundation
+{
+  using namespace dealii;
+
+  namespace
+  {
+    double
+    binomial(const unsigned int n, const unsigned int k)
+    {
+      double c = 1.;
+      for (unsigned int i = 1; i <= k; ++i)
+        c = c * (n - k + i) / i;
+      return c;
+    }
+  } // namespace
+
+  MultiTransmittingBoundary::MultiTransmittingBoundary(const FoundationParameters      &p,
+                                                       const fe::FESpace               &space,
+                                                       const solid::MaterialParameters &materials,
+                                                       const FreeField                 &free_field,
+                                                       const double                     time_step)
+    : order(p.transmitting_boundary == "MTF" ? p.mtf_order : 0)
+    , dt(time_step)
+    , free_field(free_field)
+    , comm(space.comm)
+  {
+    for (unsigned int j = 1; j <= order; ++j)
+      coefficient.push_back((j % 2 == 1 ? 1. : -1.) * binomial(order, j) *
+                            std::pow(1. + p.stabilization, -double(j)));
+
+    const auto &rock = materials.rock;
+    const double c_s = shear_wave_speed(rock), c_p = pressure_wave_speed(rock);
+    const MappingQ1<dim>        mapping;
+    const GridTools::Cache<dim> cache(space.dof_handler.get_triangulation(), mapping);
+    const auto                 &fe = space.fe_collection[fe::FESpace::solid_index];
+
+    stencil_offset.push_back(0);
+    IndexSet needed(space.dof_handler.n_dofs());
+    for (const BoundaryDof &b : outer_boundary_dofs(space))
+      {
+        boundary_dofs.push_back(b.index);
+        components.push_back(b.component);
+        z_boundary.push_back(b.position[dim - 1]);
+        needed.add_index(b.index);
+        // c_a: given, or c_p along the normal and c_s across it (n_c^2 weights).
+        const double nc2 = b.normal[b.component] * b.normal[b.component];
+        const double c_a = p.artificial_speed > 0 ? p.artificial_speed : nc2 * c_p + (1 - nc2) * c_s;
+        for (unsigned int j = 1; j <= order; ++j)
+          {
+            const Point<dim> x = b.position - j * c_a * dt * b.normal;
+            std::pair<Triangulation<dim>::active_cell_iterator, Point<dim>> found;
+            try
+              {
+                found = GridTools::find_active_cell_around_point(cache, x);
+              }
+            catch (...)
+              {
+                found.first = space.dof_handler.get_triangulation().end();
+              }
+            bool inside = found.first.state() == IteratorState::valid &&
+                          found.first->material_id() == ids::rock;
+            if (!inside)
+              {
+                // A node on the edge where the outer boundary meets a free
+                // surface (or the water) of curved or inclined shape: the
+                // normal runs close to that surface and x_j may lie just
+                // outside the rock. Take the nearest point of the rock cell at
+                // the node if it is close (a quarter of j c_a dt); a point far
+                // outside means the rock is too thin for the formula.
+                const auto at_node = GridTools::find_active_cell_around_point(cache, b.position);
+                if (at_node.first.state() == IteratorState::valid &&
+                    at_node.first->material_id() == ids::rock)
+                  {
+                    const Point<dim> unit = GeometryInfo<dim>::project_to_unit_cell(
+                      mapping.transform_real_to_unit_cell(at_node.first, x));
+                    if (mapping.transform_unit_to_real_cell(at_node.first, unit).distance(x) <
+                        0.25 * j * c_a * dt)
+                      {
+                        found  = {at_node.first, unit};
+                        inside = true;
+                      }
+                  }
+              }
+            if (!inside)
+              {
+                std::ostringstream msg;
+                msg << "Foundation: the MTF of order " << order << " needs the motion at "
+                    << j * c_a * dt << " m (j c_a dt with j = " << j << ", c_a = " << c_a
+                    << " m/s, dt = " << dt << " s) inside the outer boundary, but from the "
+                    << "boundary node at (" << b.position << ") that point (" << x
+                    << ") is not inside the rock. Reduce the time step, the MTF order or "
+                    << "the artificial speed, or extend the rock.";
+                throw InputError(msg.str());
+              }
+            const DoFHandler<dim>::active_cell_iterator cell(
+              &space.dof_handler.get_triangulation(), found.first->level(),
+              found.first->index(), &space.dof_handler);
+            if (j == 1)
+              max_courant = std::max(max_courant, c_a * dt * space.degree /
+                                                    cell->minimum_vertex_distance());
+            std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              if (fe.system_to_component_index(i).first == b.component)
+                {
+                  const double w = fe.shape_value(i, found.second);
+                  if (std::abs(w) > 1e-13)
+                    {
+                      stencil_dof.push_back(cell_dofs[i]);
+                      stencil_weight.push_back(w);
+                      needed.add_index(cell_dofs[i]);
+                    }
+                }
+            stencil_offset.push_back(stencil_dof.size());
+            z_point.push_back(x[dim - 1]);
+          }
+      }
+    IndexSet relevant = space.locally_owned;
+    relevant.add_indices(needed);
+    ghosted.reinit(space.locally_owned, relevant, comm);
+    history.assign(std::max(order, 1u), std::vector<double>(z_point.size(), 0.));
+    values.resize(boundary_dofs.size());
+  }
+
+  double
+  MultiTransmittingBoundary::interpolate(const unsigned int point, const Vector &u) const
+  {
+    double value = 0.;
+    for (unsigned int s = stencil_offset[point]; s < stencil_offset[point + 1]; ++s)
+      value += stencil_weight[s] * u(stencil_dof[s]);
+    return value;
+  }
+
+  void
+  MultiTransmittingBoundary::initialize(const Vector &u0)
+  {
+    ghosted = u0;
+    u0_boundary.resize(boundary_dofs.size());
+    for (unsigned int k = 0; k < boundary_dofs.size(); ++k)
+      u0_boundary[k] = ghosted(boundary_dofs[k]);
+    u0_point.resize(z_point.size());
+    for (unsigned int q = 0; q < z_point.size(); ++q)
+      u0_point[q] = interpolate(q, ghosted);
+    for (auto &h : history)
+      std::fill(h.begin(), h.end(), 0.);
+  }
+
+  const std::vector<double> &
+  MultiTransmittingBoundary::next_values(const double t_next)
+  {
+    for (unsigned int k = 0; k < boundary_dofs.size(); ++k)
+      {
+        double scattered = 0.;
+        for (unsigned int j = 1; j <= order; ++j)
+          scattered += coefficient[j - 1] * history[j - 1][k * order + j - 1];
+        values[k] = u0_boundary[k] +
+                    free_field.displacement(z_boundary[k], t_next)[components[k]] + scattered;
+      }
+    return values;
+  }
+
+  void
+  MultiTransmittingBoundary::record(const Vector &u, const double t)
+  {
+    if (order == 0)
+      return;
+    ghosted = u;
+    std::rotate(history.rbegin(), history.rbegin() + 1, history.rend()); // newest first
+    for (unsigned int q = 0; q < z_point.size(); ++q)
+      history[0][q] = interpolate(q, ghosted) - u0_point[q] -
+                      free_field.displacement(z_point[q], t)[components[q / order]];
+  }
+} // namespace archdam::physics::foundation

@@ -1,0 +1,72 @@
+// Bad foundation input ends with a message naming the problem (InputError):
+// - the MTF needs interior points j c_a dt inside the rock (numerics.md §5),
+//   a time step too long for the rock's depth is reported;
+// - the viscous boundary without springs cannot carry the static stage.
+
+#include <archdam/analysis/simulation.h>
+#include <archdam/base/input_error.h>
+
+#include "archdam_tests.h"
+
+using namespace dealii;
+using namespace archdam;
+
+namespace
+{
+  std::string
+  model(const std::string &foundation)
+  {
+    return R"(
+subsection Mesh
+  subsection Box
+    set Rock depth = 10
+    set Rock extent = 10
+    set Rock cell size = 10
+  end
+end
+subsection Finite element
+  set Degree = 1
+end
+subsection Foundation
+  set Model = massed
+)" + foundation + R"(
+end
+subsection Time integration
+  set Time step = 0.01
+  set End time = 0.05
+end
+subsection Output
+  set Field output interval = 0
+  set Progress = false
+  set Timer summary = false
+end
+)";
+  }
+
+  void
+  expect_error(const std::string &what, const std::string &foundation)
+  {
+    std::ostringstream quiet;
+    try
+      {
+        const Parameters     p = parameters_from_string(model(foundation));
+        analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
+        sim.run();
+        testing::log() << what << ": NO error" << std::endl;
+      }
+    catch (const InputError &e)
+      {
+        testing::log() << what << ":" << std::endl << "  " << e.what() << std::endl;
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // rock c_p = 3156 m/s: 2 c_p dt = 63 m, the rock is 10 m deep below the dam
+  expect_error("MTF with a time step too long for the rock", "  set Transmitting boundary = MTF");
+  expect_error("viscous boundary without springs, static stage",
+               "  set Transmitting boundary = viscous");
+}
