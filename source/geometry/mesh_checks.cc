@@ -1,4 +1,5 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/point_text.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh_checks.h>
 
@@ -16,14 +17,6 @@ namespace archdam::geometry
 
   namespace
   {
-    std::string
-    where(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ") m";
-      return s.str();
-    }
-
     std::string
     material_name(const types::material_id m)
     {
@@ -79,7 +72,7 @@ namespace archdam::geometry
         if (!(q >= min_valid_scaled_jacobian))
           {
             std::ostringstream s;
-            s << "Mesh: the cell centred at " << where(cell->center()) << " ("
+            s << "Mesh: the cell centred at " << point_text(cell->center()) << " m ("
               << material_name(cell->material_id()) << ", material id "
               << static_cast<unsigned int>(cell->material_id()) << ") is "
               << (q < 0 ? "inverted or tangled" : "degenerate") << ": scaled Jacobian " << q
@@ -99,7 +92,7 @@ namespace archdam::geometry
         const auto m = cell->material_id();
         if (m != ids::rock && m != ids::water && !ids::is_dam(m))
           throw InputError(
-            "Mesh: the cell centred at " + where(cell->center()) + " has material id " +
+            "Mesh: the cell centred at " + point_text(cell->center()) + " m has material id " +
             std::to_string(m) +
             ", which no material defines: use 1 (rock), 2 (water) or 10 + k (dam block k)" +
             (m == 0 ? "; 0 is what a cell outside every physical volume of a Gmsh file gets." :
@@ -137,7 +130,7 @@ namespace archdam::geometry
                   why = "3, 4 and 5 are water conditions; a solid face takes 0 "
                         "(traction-free, the default), 1 or 2";
                 throw InputError("Mesh: the boundary face centred at " +
-                                 where(cell->face(f)->center()) + " of a " +
+                                 point_text(cell->face(f)->center()) + " m of a " +
                                  material_name(cell->material_id()) + " cell has boundary id " +
                                  std::to_string(id) + ": " + why + ".");
               }
@@ -157,7 +150,7 @@ namespace archdam::geometry
               throw InputError(
                 "Mesh: a face of a " + material_name(cell->material_id()) + " cell and a face of a " +
                 material_name(it->second->material_id()) + " cell lie at the same place, centred at " +
-                where(cell->face(f)->center()) +
+                point_text(cell->face(f)->center()) + " m" +
                 ", without sharing their nodes: the mesh is not conforming, and this face "
                 "would be a joint face without a partner (or water not coupled to the "
                 "solid). In Gmsh, make neighbouring volumes share their surfaces "

@@ -1,4 +1,5 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/point_text.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/splitter.h>
 
@@ -18,13 +19,6 @@ namespace archdam::geometry
     // always has its own.
     constexpr int water_copy = -2, shared_solid_copy = -1;
 
-    std::string
-    where(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-      return s.str();
-    }
 
     /// The id the face of @p cell towards @p neighbor gets when the splitter
     /// separates them (numbers::internal_face_boundary_id: stays connected).
@@ -46,7 +40,7 @@ namespace archdam::geometry
           throw InputError("Mesh: dam blocks " + std::to_string(k) + " and " +
                            std::to_string(j) + " (material ids " + std::to_string(m) +
                            " and " + std::to_string(n) +
-                           ") touch at " + where(face_center) +
+                           ") touch at " + point_text(face_center) +
                            " but are not neighbours; blocks must be numbered in order "
                            "along the dam.");
         }
@@ -120,7 +114,7 @@ namespace archdam::geometry
                   // tangled order, which overlaps its neighbours).
                   if (id == numbers::internal_face_boundary_id)
                     throw InputError("Mesh: the cells around " +
-                                     where(old_cell->face(f)->center()) +
+                                     point_text(old_cell->face(f)->center()) +
                                      " share vertices but not their faces: a cell there "
                                      "has its nodes in a tangled order (it is twisted and "
                                      "overlaps its neighbours). Check the node order of "

@@ -1,4 +1,5 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/point_text.h>
 #include <archdam/geometry/splitter.h>
 #include <archdam/joints/joint_faces.h>
 
@@ -31,13 +32,6 @@ namespace archdam::joints
       return k;
     }
 
-    std::string
-    where(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-      return s.str();
-    }
   } // namespace
 
   std::vector<JointFacePair>
@@ -96,7 +90,7 @@ namespace archdam::joints
                         geometry::joint_of(one.first->face(one.second)->boundary_id());
                       if (joint_1 != joint)
                         throw InputError("Mesh: a face of joint " + std::to_string(joint) +
-                                         " at " + where(face2->center()) +
+                                         " at " + point_text(face2->center()) +
                                          " lies on a face of joint " +
                                          std::to_string(joint_1) + ".");
                       pairs.push_back({joint, one.first, two.first, one.second, two.second});
@@ -108,7 +102,7 @@ namespace archdam::joints
         if (!found)
           throw InputError("Mesh: the face of joint " + std::to_string(joint) +
                            " (block " + std::to_string(joint + 1) + "'s side) at " +
-                           where(face2->center()) + " has no partner on block " +
+                           point_text(face2->center()) + " has no partner on block " +
                            std::to_string(joint) + ".");
       }
     for (const auto &[key, faces] : side_1)
@@ -118,7 +112,7 @@ namespace archdam::joints
             const auto joint = geometry::joint_of(one.first->face(one.second)->boundary_id());
             throw InputError("Mesh: the face of joint " + std::to_string(joint) + " (block " +
                              std::to_string(joint) + "'s side) at " +
-                             where(one.first->face(one.second)->center()) +
+                             point_text(one.first->face(one.second)->center()) +
                              " has no partner on block " + std::to_string(joint + 1) + ".");
           }
     return pairs;

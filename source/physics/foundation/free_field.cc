@@ -86,41 +86,37 @@ namespace archdam::physics::foundation
     return FreeField(control, rock, z_surface, z_bottom);
   }
 
-  // u_ff = 1/2 [u_c(t1) + u_c(t2)], t1,2 = t - T +- s/c (numerics.md §5).
+  // u_ff = 1/2 [u_c(t1) + u_c(t2)], t1,2 = t - T +- s/c (numerics.md §5), and
+  // the same for its time derivatives.
   Tensor<1, dim>
-  FreeField::displacement(const double z, const double time) const
+  FreeField::incident_plus_reflected(const double z, const double time,
+                                     double (ControlMotion::*of)(double) const) const
   {
     Tensor<1, dim> u;
     for (unsigned int d = 0; d < dim; ++d)
       {
         const double t0 = time - delay(d), ds = (z_s - z) / c[d];
-        u[d] = 0.5 * (control[d].displacement(t0 + ds) + control[d].displacement(t0 - ds));
+        u[d] = 0.5 * ((control[d].*of)(t0 + ds) + (control[d].*of)(t0 - ds));
       }
     return u;
+  }
+
+  Tensor<1, dim>
+  FreeField::displacement(const double z, const double time) const
+  {
+    return incident_plus_reflected(z, time, &ControlMotion::displacement);
   }
 
   Tensor<1, dim>
   FreeField::velocity(const double z, const double time) const
   {
-    Tensor<1, dim> u;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double t0 = time - delay(d), ds = (z_s - z) / c[d];
-        u[d] = 0.5 * (control[d].velocity(t0 + ds) + control[d].velocity(t0 - ds));
-      }
-    return u;
+    return incident_plus_reflected(z, time, &ControlMotion::velocity);
   }
 
   Tensor<1, dim>
   FreeField::acceleration(const double z, const double time) const
   {
-    Tensor<1, dim> u;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double t0 = time - delay(d), ds = (z_s - z) / c[d];
-        u[d] = 0.5 * (control[d].acceleration(t0 + ds) + control[d].acceleration(t0 - ds));
-      }
-    return u;
+    return incident_plus_reflected(z, time, &ControlMotion::acceleration);
   }
 
   SymmetricTensor<2, dim>

@@ -1,4 +1,5 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/point_text.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 
@@ -58,13 +59,6 @@ namespace archdam::physics::reservoir
         }
     }
 
-    std::string
-    where(const Point<dim> &p)
-    {
-      std::ostringstream s;
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
-      return s.str();
-    }
   } // namespace
 
   std::vector<InterfacePair>
@@ -115,7 +109,7 @@ namespace archdam::physics::reservoir
           }
         if (std::abs(covered - ff.area) > 1e-6 * ff.area)
           throw InputError("Reservoir: the wetted water face at " +
-                           where(ff.cell->face(ff.face)->center()) +
+                           point_text(ff.cell->face(ff.face)->center()) +
                            " is not matched by solid faces (the water and solid "
                            "meshes must meet face to face, one side a refinement of "
                            "the other).");
@@ -123,7 +117,7 @@ namespace archdam::physics::reservoir
     for (unsigned int i = 0; i < solid.size(); ++i)
       if (std::abs(solid_covered[i] - solid[i].area) > 1e-6 * solid[i].area)
         throw InputError("Reservoir: the wetted solid face at " +
-                         where(solid[i].cell->face(solid[i].face)->center()) +
+                         point_text(solid[i].cell->face(solid[i].face)->center()) +
                          " is not matched by water faces (the water and solid "
                          "meshes must meet face to face, one side a refinement of "
                          "the other).");

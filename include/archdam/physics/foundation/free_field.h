@@ -95,6 +95,11 @@ namespace archdam::physics::foundation
     }
 
   private:
+    /// 1/2 [q(t1) + q(t2)] for q = the control motion's displacement,
+    /// velocity or acceleration (@p of).
+    dealii::Tensor<1, dim>
+    incident_plus_reflected(double z, double t, double (ControlMotion::*of)(double) const) const;
+
     std::array<ControlMotion, dim> control;
     solid::ElasticMaterial         rock;
     std::array<double, dim>        c;
