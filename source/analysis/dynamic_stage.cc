@@ -54,6 +54,8 @@ namespace archdam::analysis
                                                           stiffness_matrix, rayleigh,
                                                           fe_space->constraints);
     }
+    if (node_pairs)
+      start_dynamic_joints(*newmark);
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
@@ -78,15 +80,24 @@ namespace archdam::analysis
         {
           TimerOutput::Scope t(timer, "dynamic: steps");
           external_load(n * dt, load);
-          newmark->advance(load, current);
+          if (node_pairs)
+            advance_with_joints(*newmark, load);
+          else
+            newmark->advance(load, current);
           current.time = n * dt; // no drift from repeated additions
         }
         {
           TimerOutput::Scope t(timer, "dynamic: monitors");
           history->append(monitor->evaluate(current));
+          if (joint_output)
+            joint_output->record(current.time, *joint_solver);
         }
         if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
-          write_fields();
+          {
+            write_fields();
+            if (joint_output)
+              joint_output->write_fields(current.time, *joint_solver);
+          }
 
         if (p.output.progress && (elapsed() - last_report > report_every || n == n_steps))
           {

@@ -59,8 +59,16 @@ namespace archdam::analysis
     fe_space    = std::make_unique<fe::FESpace>(triangulation, p.finite_element);
     fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {
       // Contraction joints/Model = glued: the monolithic dam.
-      joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant, c);
+      if (!p.joints.frictional())
+        joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant,
+                               c);
     });
+    if (p.joints.frictional())
+      {
+        node_pairs = std::make_unique<joints::NodePairs>(*fe_space, joint_faces);
+        screen << "Joints: " << node_pairs->n_joints() << " in frictional contact, "
+               << node_pairs->size() << " node pairs" << std::endl;
+      }
 
     unsigned int n_dam = 0, n_rock = 0;
     for (const auto &cell : triangulation.active_cell_iterators())
@@ -165,6 +173,9 @@ namespace archdam::analysis
         summary.set("peaks/major principal stress in the dam [Pa]/note",
                     "maximum over quadrature points at field output times");
       }
+
+    if (node_pairs)
+      summarize_joints();
 
     for (const auto &[stage, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       summary.set("wall time [s]/" + stage, seconds);

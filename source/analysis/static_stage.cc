@@ -22,7 +22,10 @@ namespace archdam::analysis
       stiffness_factor.factorize(stiffness_matrix, true);
       Vector rhs = static_load;
       fe_space->constraints.set_zero(rhs);
-      stiffness_factor.solve(u_static, rhs);
+      if (node_pairs)
+        solve_static_with_joints(stiffness_factor, rhs);
+      else
+        stiffness_factor.solve(u_static, rhs);
       fe_space->constraints.distribute(u_static);
       current.u = u_static;
     }

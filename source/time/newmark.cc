@@ -69,6 +69,15 @@ namespace archdam::time
   void
   NewmarkIntegrator::advance(const Vector &load_next, NewmarkState &s)
   {
+    effective_load(load_next, s, rhs);
+    effective_operator.solve(da, rhs);
+    update(da, s);
+  }
+
+  void
+  NewmarkIntegrator::effective_load(const Vector &load_next, const NewmarkState &s,
+                                    Vector &result)
+  {
     // predictors (eq. 2.1)
     up = s.u;
     up.add(dt, s.v, 0.5 * dt * dt, s.a);
@@ -76,26 +85,29 @@ namespace archdam::time
     vp.add(dt, s.a);
 
     // effective load (eq. 2.3)
-    rhs = load_next;
-    tmp = s.a;
+    result = load_next;
+    tmp    = s.a;
     tmp.add(alpha, vp);
     M.vmult(da, tmp);
-    rhs -= da;
+    result -= da;
     tmp = up;
     tmp.add(beta, vp);
     K.vmult(da, tmp);
-    rhs -= da;
-    constraints.set_zero(rhs);
+    result -= da;
+    constraints.set_zero(result);
+  }
 
-    effective_operator.solve(da, rhs);
-    constraints.distribute(da); // constrained DOFs follow their masters
+  void
+  NewmarkIntegrator::update(Vector &acceleration_increment, NewmarkState &s)
+  {
+    constraints.distribute(acceleration_increment); // constrained DOFs follow their masters
 
     // correctors (eq. 2.2)
     s.u = up;
-    s.u.add(p.beta2 * dt * dt, da);
+    s.u.add(p.beta2 * dt * dt, acceleration_increment);
     s.v = vp;
-    s.v.add(p.beta1 * dt, da);
-    s.a += da;
+    s.v.add(p.beta1 * dt, acceleration_increment);
+    s.a += acceleration_increment;
     s.time += dt;
     ++s.step;
   }

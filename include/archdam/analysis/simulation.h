@@ -2,6 +2,8 @@
 
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_faces.h>
+#include <archdam/joints/joint_output.h>
+#include <archdam/joints/joint_solver.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/histories.h>
@@ -76,6 +78,24 @@ namespace archdam::analysis
     {
       return *monitor;
     }
+    /// The joints in frictional contact (null for glued joints): node pairs,
+    /// their state after the last stage, and the joint histories of the
+    /// dynamic stage.
+    const joints::NodePairs *
+    joint_pairs() const
+    {
+      return node_pairs.get();
+    }
+    const joints::JointSolver *
+    joint_state() const
+    {
+      return joint_solver.get();
+    }
+    const joints::JointOutput *
+    joint_histories() const
+    {
+      return joint_output.get();
+    }
 
   private:
     void
@@ -88,6 +108,21 @@ namespace archdam::analysis
     /// Fields of the current state, and the stress peak over the dam.
     void
     write_fields();
+
+    // Contraction joints/Model = frictional contact (joint_stages.cc).
+    /// K u = F_static with the joints in contact (the mixed method with K).
+    void
+    solve_static_with_joints(const time::FactorizedOperator &stiffness_factor,
+                             const Vector                   &rhs);
+    /// The dynamic stage's joint solver with Kbar, from the static state.
+    void
+    start_dynamic_joints(const time::NewmarkIntegrator &newmark);
+    /// One Newmark step: predictor, contact problem, corrector.
+    void
+    advance_with_joints(time::NewmarkIntegrator &newmark, const Vector &load);
+    /// Contact iterations, joint peaks and envelopes into the summary.
+    void
+    summarize_joints();
 
     /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation);
     /// F_static only if the static stage runs.
@@ -112,5 +147,12 @@ namespace archdam::analysis
     physics::solid::PeakStress               peak_stress{-1e300, {}};
     double                                   peak_stress_time = 0.;
     output::Summary                          summary;
+    std::unique_ptr<joints::NodePairs>       node_pairs;
+    std::unique_ptr<joints::JointSolver>     joint_solver;
+    std::unique_ptr<joints::JointOutput>     joint_output;
+    /// Contact iterations per dynamic step: sum, maximum; flagged steps.
+    unsigned long                            contact_iterations = 0;
+    unsigned int                             max_contact_iterations = 0;
+    std::vector<double>                      non_converged_times;
   };
 } // namespace archdam::analysis

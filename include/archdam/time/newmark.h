@@ -63,6 +63,42 @@ namespace archdam::time
       return dt;
     }
 
+    // The step split for contact forces (numerics.md §3): advance() is
+    // effective_load(), one back-substitution with Kbar, and update(); a joint
+    // solver puts its predictor, contact problem and corrector in between.
+
+    /// The predictors u^p, v^p of the step from @p s and the right-hand side
+    /// of Kbar da = rhs (eq. 2.3), constrained rows zero.
+    void
+    effective_load(const Vector &load_next, const NewmarkState &s, Vector &rhs);
+    /// u^p of the step prepared by effective_load(); u_{n+1} = u^p + beta2 dt^2 da.
+    const Vector &
+    predicted_displacement() const
+    {
+      return up;
+    }
+    /// beta2 dt^2: the displacement per unit acceleration increment.
+    double
+    displacement_factor() const
+    {
+      return p.beta2 * dt * dt;
+    }
+    /// Correctors (eq. 2.2) with the solved da (its constrained entries are
+    /// set from the constraints first): t_n -> t_{n+1}.
+    void
+    update(Vector &da, NewmarkState &s);
+    /// Kbar and its factorization (constant for the run).
+    const SparseMatrix &
+    effective() const
+    {
+      return effective_matrix;
+    }
+    const FactorizedOperator &
+    effective_factor() const
+    {
+      return effective_operator;
+    }
+
   private:
     const NewmarkParameters                  p;
     const double                             dt;
