@@ -36,11 +36,15 @@ namespace archdam::joints
     // Slip: delta = 0 and f_t = tau(f_xi) d with d the unit slip increment,
     // a fixed point on d started from the stick force's direction (exact in
     // one step when A is isotropic in the tangent plane).
-    if (f[0] <= strength.tensile_force && tangential_norm(f) > 0)
-      {
-        Tensor<1, dim> d;
-        d[1] = f[1] / tangential_norm(f);
-        d[2] = f[2] / tangential_norm(f);
+    // (The stick trial may need tension only because it holds the tangential
+    // displacement: try slip whatever its normal force was.)
+    {
+      Tensor<1, dim> d;
+      if (tangential_norm(f) > 0)
+        {
+          d[1] = f[1] / tangential_norm(f);
+          d[2] = f[2] / tangential_norm(f);
+        }
         Tensor<1, dim> g;
         bool           consistent = false;
         for (unsigned int it = 0; it < 50; ++it)
