@@ -86,6 +86,82 @@ namespace archdam::joints
     return change == 0. ? 0. : change / scale;
   }
 
+  void
+  JointSolver::start_directions()
+  {
+    direction.assign(pairs.size(), Tensor<1, dim>());
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const double t = std::hypot(force_committed[dim * i + 1], force_committed[dim * i + 2]);
+        if (t > 0)
+          for (const unsigned int k : {1u, 2u})
+            direction[i][k] = force_committed[dim * i + k] / t;
+      }
+  }
+
+  bool
+  JointSolver::update_state(const unsigned int i)
+  {
+    double      *f  = &force[dim * i];
+    Tensor<1, dim> &d = direction[i];
+    const auto   strength_i = strength(i);
+    const double f_norm     = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    const double t          = std::hypot(f[1], f[2]);
+    const double tau        = strength_i.shear_capacity(f[0]);
+    const auto   separate   = [&] {
+      state[i] = PairState::separation;
+      std::fill(f, f + dim, 0.);
+      return true;
+    };
+    switch (state[i])
+      {
+        case PairState::separation:
+          if (gap(i) < -p.gap_tolerance)
+            {
+              state[i] = PairState::stick;
+              return true;
+            }
+          return false;
+        case PairState::stick:
+          if (f[0] > strength_i.tensile_force + p.force_tolerance * f_norm)
+            return separate();
+          if (t > tau + p.force_tolerance * f_norm)
+            {
+              state[i] = PairState::slip;
+              d[1]     = f[1] / t;
+              d[2]     = f[2] / t;
+              return true;
+            }
+          return false;
+        case PairState::slip:
+          {
+            if (f[0] > strength_i.tensile_force + p.force_tolerance * f_norm || tau < 0)
+              return separate();
+            // the augmented tangential force q = f_t + r dw_t (Alart-Curnier):
+            // stick when it falls inside the capacity, else the new direction
+            const double s1 = w[dim * i + 1] - w_committed[dim * i + 1],
+                         s2 = w[dim * i + 2] - w_committed[dim * i + 2];
+            const double q1 = f[1] + augmentation[i] * s1, q2 = f[2] + augmentation[i] * s2;
+            const double q  = std::hypot(q1, q2);
+            if (q < tau - p.force_tolerance * f_norm)
+              {
+                state[i] = PairState::stick;
+                return true;
+              }
+            // the part of the slip increment not along the friction force [m]
+            const double along  = s1 * d[1] + s2 * d[2];
+            const double misfit = std::hypot(s1 - along * d[1], s2 - along * d[2]);
+            if (q > 0)
+              {
+                d[1] = q1 / q;
+                d[2] = q2 / q;
+              }
+            return misfit > p.gap_tolerance || along < -p.gap_tolerance;
+          }
+      }
+    return false;
+  }
+
   std::string
   JointSolver::describe(const ContactStep &step) const
   {
@@ -120,7 +196,7 @@ namespace archdam::joints
                     const SparseMatrix &A, const time::FactorizedOperator &A_factor)
   {
     if (p.solver == "monolithic")
-      return std::make_unique<MonolithicJointSolver>(p, pairs, h, A);
+      return std::make_unique<MonolithicJointSolver>(p, pairs, h, A, A_factor);
     return std::make_unique<MixedJointSolver>(p, pairs, h, A_factor);
   }
 } // namespace archdam::joints

@@ -1,5 +1,8 @@
 #include <archdam/joints/joint_solver.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <chrono>
 #include <cmath>
 
@@ -93,6 +96,21 @@ namespace archdam::joints
     return C;
   }
 
+  std::vector<double>
+  augmentation_of(const std::vector<double> &C, const double h)
+  {
+    const unsigned int  m = std::lround(std::sqrt(static_cast<double>(C.size())));
+    std::vector<double> r(m / dim);
+    for (unsigned int i = 0; i < r.size(); ++i)
+      {
+        const auto diagonal = [&](const unsigned int k) {
+          return C[static_cast<std::size_t>(dim * i + k) * m + dim * i + k];
+        };
+        r[i] = 2. / (h * (diagonal(1) + diagonal(2)));
+      }
+    return r;
+  }
+
   MixedJointSolver::MixedJointSolver(const JointParameters &p, const NodePairs &pairs,
                                      const double h, const time::FactorizedOperator &A_factor)
     : JointSolver(p, pairs, h)
@@ -116,6 +134,7 @@ namespace archdam::joints
         C = flexibility_matrix(pairs, A_factor, r, 64, p.coupling == "neighbouring joints");
         build_time =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        augmentation = augmentation_of(C, h);
       }
 
     // 1. predictor: the pair forces held at their committed values.
@@ -127,45 +146,74 @@ namespace archdam::joints
       w[j] = w_base[j] + h * w[j];
     force = force_committed;
 
-    // 2. the contact problem on the pairs: w = w_bar - h C (f - f_n), projected
-    //    block Gauss-Seidel, each pair solving its own law with the others frozen.
+    // 2. the contact problem on the pairs: w = s - h C f with s = w + h C f_n
+    //    the relative displacement at zero pair forces; active-set iteration.
+    std::vector<double> s(w);
+    for (unsigned int j = 0; j < m; ++j)
+      if (force_committed[j] != 0.)
+        for (unsigned int k = 0; k < m; ++k)
+          s[k] += h * C[static_cast<std::size_t>(j) * m + k] * force_committed[j];
+    start_directions();
+
     ContactStep         step;
     std::vector<double> before;
+    std::vector<unsigned int> closed;
     while (step.iterations < p.max_iterations)
       {
         ++step.iterations;
         before = force;
+        // The law with the states and directions fixed, on the closed pairs.
+        closed.clear();
         for (unsigned int i = 0; i < pairs.size(); ++i)
+          if (state[i] != PairState::separation)
+            closed.push_back(i);
+        const unsigned int        n = dim * closed.size();
+        LAPACKFullMatrix<double>  L(n, n);
+        dealii::Vector<double>    f(n);
+        for (unsigned int a = 0; a < closed.size(); ++a)
           {
-            Tensor<2, dim> A_ii;
-            Tensor<1, dim> s, w_prev, f;
-            for (unsigned int a = 0; a < dim; ++a)
+            const unsigned int i = closed[a];
+            for (unsigned int k = 0; k < dim; ++k)
               {
-                for (unsigned int b = 0; b < dim; ++b)
-                  A_ii[a][b] = h * C[static_cast<std::size_t>(dim * i + b) * m + dim * i + a];
-                w_prev[a] = w_committed[dim * i + a];
-              }
-            for (unsigned int a = 0; a < dim; ++a)
-              {
-                s[a] = w[dim * i + a];
-                for (unsigned int b = 0; b < dim; ++b)
-                  s[a] += A_ii[a][b] * force[dim * i + b];
-              }
-            state[i] = solve_pair(A_ii, s, w_prev, laws[i].initial_gap, strength(i), f);
-            for (unsigned int b = 0; b < dim; ++b)
-              {
-                const double df = f[b] - force[dim * i + b];
-                if (df == 0.)
-                  continue;
-                const double *column = &C[static_cast<std::size_t>(dim * i + b) * m];
-                for (unsigned int j = 0; j < m; ++j)
-                  w[j] -= h * column[j] * df;
-                force[dim * i + b] = f[b];
+                const unsigned int row = dim * a + k;
+                if (k > 0 && state[i] == PairState::slip)
+                  {
+                    // f_k - (c A - mu f_xi) d_k = 0
+                    const auto strength_i = strength(i);
+                    L(row, row)       = 1.;
+                    L(row, dim * a)   = strength_i.friction * direction[i][k];
+                    f(row)            = strength_i.cohesion_force * direction[i][k];
+                    continue;
+                  }
+                // (h C f)_ik = s_ik - w_target,k
+                for (unsigned int b = 0; b < closed.size(); ++b)
+                  for (unsigned int l = 0; l < dim; ++l)
+                    L(row, dim * b + l) =
+                      h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+                f(row) = s[dim * i + k] - (k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k]);
               }
           }
+        if (n > 0)
+          {
+            L.compute_lu_factorization();
+            L.solve(f);
+          }
+        std::fill(force.begin(), force.end(), 0.);
+        for (unsigned int a = 0; a < closed.size(); ++a)
+          for (unsigned int k = 0; k < dim; ++k)
+            force[dim * closed[a] + k] = f(dim * a + k);
+        w = s;
+        for (unsigned int j = 0; j < m; ++j)
+          if (force[j] != 0.)
+            for (unsigned int k = 0; k < m; ++k)
+              w[k] -= h * C[static_cast<std::size_t>(j) * m + k] * force[j];
+
+        bool changed = false;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          changed = update_state(i) || changed;
         step.force_change = relative_change(before);
         step.gap_residual = gap_residual(step.worst_pair);
-        if (step.force_change <= p.force_tolerance && step.gap_residual <= p.gap_tolerance)
+        if (!changed && step.gap_residual <= p.gap_tolerance)
           {
             step.converged = true;
             break;

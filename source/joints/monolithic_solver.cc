@@ -31,9 +31,11 @@ namespace archdam::joints
   } // namespace
 
   MonolithicJointSolver::MonolithicJointSolver(const JointParameters &p, const NodePairs &pairs,
-                                               const double h, const SparseMatrix &A)
+                                               const double h, const SparseMatrix &A,
+                                               const time::FactorizedOperator &A_factor)
     : JointSolver(p, pairs, h)
     , A(A)
+    , A_factor(A_factor)
   {
     // kappa h = Penalty factor x the largest diagonal entry of A.
     Vector diagonal;
@@ -75,15 +77,9 @@ namespace archdam::joints
   {
     const IndexSet owned = A.locally_owned_range_indices();
     const unsigned int n = pairs.size();
-    // Slip directions (unit, tangential), from the committed forces.
-    std::vector<Tensor<1, dim>> direction(n);
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        const double t = std::hypot(force_committed[dim * i + 1], force_committed[dim * i + 2]);
-        if (t > 0)
-          for (const unsigned int k : {1u, 2u})
-            direction[i][k] = force_committed[dim * i + k] / t;
-      }
+    if (augmentation.empty())
+      augmentation = augmentation_of(flexibility_matrix(pairs, A_factor, r, 64, false), h);
+    start_directions();
     force = force_committed;
     Vector rhs;
     rhs.reinit(r);
@@ -155,56 +151,19 @@ namespace archdam::joints
         for (unsigned int i = 0; i < n; ++i)
           {
             double *f = &force[dim * i];
-            const auto strength_i = strength(i);
             if (state[i] == PairState::separation)
-              {
-                std::fill(f, f + dim, 0.);
-                if (gap(i) < -p.gap_tolerance)
-                  {
-                    state[i]       = PairState::stick;
-                    states_changed = true;
-                  }
-                continue;
-              }
-            f[0] = kappa * (w[dim * i] + laws[i].initial_gap);
-            if (state[i] == PairState::stick)
-              for (const unsigned int k : {1u, 2u})
-                f[k] = kappa * (w[dim * i + k] - w_committed[dim * i + k]);
+              std::fill(f, f + dim, 0.);
             else
-              for (const unsigned int k : {1u, 2u})
-                f[k] = strength_i.shear_capacity(f[0]) * direction[i][k];
-
-            const double t = std::hypot(f[1], f[2]);
-            if (f[0] > strength_i.tensile_force)
               {
-                state[i] = PairState::separation;
-                std::fill(f, f + dim, 0.);
-                states_changed = true;
-              }
-            else if (state[i] == PairState::stick &&
-                     t > strength_i.shear_capacity(f[0]) * (1 + 1e-12))
-              {
-                state[i] = PairState::slip;
-                for (const unsigned int k : {1u, 2u})
-                  direction[i][k] = f[k] / t;
-                states_changed = true;
-              }
-            else if (state[i] == PairState::slip)
-              {
-                const double s1 = w[dim * i + 1] - w_committed[dim * i + 1],
-                             s2 = w[dim * i + 2] - w_committed[dim * i + 2];
-                const double s  = std::hypot(s1, s2);
-                if (s1 * direction[i][1] + s2 * direction[i][2] <= 0.)
-                  {
-                    state[i]       = PairState::stick;
-                    states_changed = true;
-                  }
+                f[0] = kappa * (w[dim * i] + laws[i].initial_gap);
+                if (state[i] == PairState::stick)
+                  for (const unsigned int k : {1u, 2u})
+                    f[k] = kappa * (w[dim * i + k] - w_committed[dim * i + k]);
                 else
-                  {
-                    direction[i][1] = s1 / s;
-                    direction[i][2] = s2 / s;
-                  }
+                  for (const unsigned int k : {1u, 2u})
+                    f[k] = strength(i).shear_capacity(f[0]) * direction[i][k];
               }
+            states_changed = update_state(i) || states_changed;
           }
         step.force_change = relative_change(before);
         step.gap_residual = gap_residual(step.worst_pair);

@@ -31,22 +31,4 @@ namespace archdam::joints
 
   PairStrength
   strength_of(const JointLaw &law, double area, bool damaged);
-
-  /**
-   * One pair of the contact problem with all other pairs frozen: the relative
-   * displacement responds to the pair's own force f (on side 1, local frame,
-   * f_xi < 0 = compression) as w = s - A f, A = h C_ii (3x3, symmetric
-   * positive definite). Finds f and the state so that the law holds:
-   *  - stick: gap delta = delta_0 + w_xi = 0 and tangential w = @p w_previous
-   *    (no slip in the step), f_xi <= sigma_t A, |f_t| <= -mu f_xi + c A;
-   *  - slip: delta = 0, |f_t| = -mu f_xi + c A, f_t along the slip increment
-   *    (the force on side 2, -f_t, opposes the slip of side 2), f_xi <= sigma_t A;
-   *  - separation: f = 0 (and delta > 0).
-   * Stick is tried first (an intact joint holds tension), then slip, else the
-   * pair separates.
-   */
-  PairState
-  solve_pair(const dealii::Tensor<2, dim> &A, const dealii::Tensor<1, dim> &s,
-             const dealii::Tensor<1, dim> &w_previous, double initial_gap,
-             const PairStrength &strength, dealii::Tensor<1, dim> &f);
 } // namespace archdam::joints

@@ -83,6 +83,33 @@ namespace archdam::joints
     double
     relative_change(const std::vector<double> &before) const;
 
+    /**
+     * The active-set update of pair i (numerics.md §3) from its force (for
+     * the current state) and relative displacement: separation -> stick when
+     * the gap closes by more than Gap tolerance; stick/slip -> separation
+     * when f_xi exceeds sigma_t A (or the shear capacity becomes negative);
+     * stick -> slip when |f_t| exceeds the capacity by more than Force
+     * tolerance (relative), the slip direction then along f_t; slip -> stick
+     * when the augmented tangential force q = f_t + r dw_t (Alart-Curnier,
+     * r = augmentation, dw_t the slip increment) falls inside the capacity,
+     * else the slip direction becomes q / |q| (a damped update: the
+     * direction moves towards the slip increment by the step r). The
+     * tolerance bands keep a pair exactly at the stick/slip limit from
+     * switching back and forth. Returns whether the state changed or, in
+     * slip, the slip increment is not along the direction (by more than Gap
+     * tolerance, in m).
+     */
+    bool
+    update_state(unsigned int i);
+
+    /// Augmentation r of every pair [N/m], ~ its own stiffness 1 / (h C_tt,ii).
+    std::vector<double> augmentation;
+    /// Unit tangential slip direction of every slipping pair (local frame).
+    std::vector<dealii::Tensor<1, dim>> direction;
+    /// Slip directions from the committed tangential forces.
+    void
+    start_directions();
+
     const JointParameters &p;
     const double           h;
     std::vector<JointLaw>  laws;
@@ -93,8 +120,17 @@ namespace archdam::joints
    * The mixed method (numerics.md §3, paper eq. 2.5-2.8): A is factorized
    * once; the flexibility matrix C = B A^{-1} B^T on the pair DOFs is built
    * once; each solve is a predictor (one back-substitution), the contact
-   * problem on the pairs alone (projected block Gauss-Seidel over pairs), and a
-   * corrector (a second back-substitution, only if a force changed).
+   * problem on the pairs alone, and a corrector (a second back-substitution,
+   * only if a force changed).
+   * The contact problem w = s - h C f with the law at every pair is solved
+   * by an active-set (semi-smooth Newton) iteration: with the states and
+   * slip directions fixed, the law is linear in f (stick: w = w_target in
+   * all three directions; slip: w_xi = -delta_0 and f_t = (c A - mu f_xi) d;
+   * separation: f = 0), a dense system on the forces of the closed pairs
+   * solved by LU; then update_state() on every pair; repeat until no state
+   * or direction changes. All pairs are coupled through C at once, so a
+   * rigid block on several pairs stops or slides as a whole (a pair-by-pair
+   * Gauss-Seidel sweep cycles there between stick and slip).
    */
   class MixedJointSolver : public JointSolver
   {
@@ -131,6 +167,12 @@ namespace archdam::joints
   flexibility_matrix(const NodePairs &pairs, const time::FactorizedOperator &A_factor,
                      const Vector &layout, unsigned int block_size, bool neighbours_only);
 
+  /// The augmentation of every pair from C: r_i = 1 / (h C_tt,ii), the mean
+  /// of its two tangential diagonal entries (the pair's own stiffness
+  /// including everything it moves, e.g. a whole block).
+  std::vector<double>
+  augmentation_of(const std::vector<double> &C, double h);
+
   /**
    * The monolithic reference (numerics.md §3): the same law enforced on the
    * full system by penalty springs between the two sides of every closed pair
@@ -138,20 +180,23 @@ namespace archdam::joints
    * the friction force as a load), the penalized matrix refactorized at every
    * iteration of the contact states. The penalty stiffness is Penalty factor
    * times the largest diagonal entry of A (over h), so the law holds to
-   * |f| / kappa in w.
+   * |f| / kappa in w. The stick/slip decision uses the augmentation of the
+   * mixed method (from the diagonal of C, built once at the first solve), so
+   * both iterate on the same criterion.
    */
   class MonolithicJointSolver : public JointSolver
   {
   public:
     MonolithicJointSolver(const JointParameters &p, const NodePairs &pairs, double h,
-                          const SparseMatrix &A);
+                          const SparseMatrix &A, const time::FactorizedOperator &A_factor);
     ~MonolithicJointSolver() override;
 
     ContactStep
     solve(const Vector &r, const std::vector<double> &w_base, Vector &x) override;
 
   private:
-    const SparseMatrix &A;
+    const SparseMatrix             &A;
+    const time::FactorizedOperator &A_factor;
     Mat                                      pattern = nullptr; ///< A with room for the springs
     double                                   kappa   = 0.;
   };
