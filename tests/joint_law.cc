@@ -1,4 +1,5 @@
-// Tension cut-off, residual strength and an initial gap that closes
+// The contact law on one joint: tension cut-off, residual strength, an
+// initial gap that closes, and an oblique load slipping in its direction
 // (verification.md, joints; numerics.md §3): a 1 m cube (block 1, m = 2400
 // kg) on a fixed base block (block 0) across one horizontal joint (mu = 0.5,
 // c = sigma_t = 1e4 Pa, residual values 0), loaded by a
@@ -19,6 +20,12 @@
 //     closes at t = sqrt(2 delta_0 / a) (Newmark is exact for a constant
 //     acceleration: the step that contains it), and the block
 //     never penetrates (gap >= -Gap tolerance).
+//  6. Oblique slip: under its weight W (mu = 0.5, c = 0) the block gets a
+//     horizontal load 0.8 W at 30 degrees from x: it slides along the load
+//     (isotropic friction) with acceleration (0.8 - 0.5) g, slip 0.3 g t^2 / 2
+//     after t = 0.1 s (tolerance 2 %: the load jump is averaged over the
+//     first step, a lag of dt / 2, relative 2 (dt / 2) / t = 1 %); the slip
+//     direction within 0.1 degree.
 
 #include <archdam/time/newmark.h>
 
@@ -33,7 +40,7 @@ namespace
   struct Run
   {
     testing::BlockModel               m{2, 2, Point<dim>(1., 1., 2.), 1, 1, 1e11, 0.2, 2400., {0}};
-    archdam::Vector                   iota_z;
+    archdam::Vector                   iota_x, iota_y, iota_z;
     time::NewmarkState                s;
     std::unique_ptr<time::NewmarkIntegrator> newmark;
     std::unique_ptr<joints::JointSolver>     solver;
@@ -42,8 +49,11 @@ namespace
 
     Run(const joints::JointParameters &jp, const double dt)
     {
-      physics::solid::assemble_inertia_load(*m.space, m.materials, physics::solid::InertiaOf::dam,
-                                            Point<dim>::unit_vector(2), iota_z);
+      for (const unsigned int d : {0u, 1u, 2u})
+        physics::solid::assemble_inertia_load(*m.space, m.materials,
+                                              physics::solid::InertiaOf::dam,
+                                              Point<dim>::unit_vector(d),
+                                              d == 0 ? iota_x : d == 1 ? iota_y : iota_z);
       time::NewmarkParameters np;
       np.time_step = dt;
       np.beta1     = 0.6;
@@ -57,12 +67,13 @@ namespace
       m.space->reinit(s.a);
     }
 
-    /// One step with the body force F [N] on the block (acceleration F / m).
+    /// One step with the body force (Fx, Fy, F) [N] on the block (acceleration / m).
     void
-    step(const double F)
+    step(const double F, const double Fx = 0., const double Fy = 0.)
     {
       archdam::Vector load(iota_z);
       load *= F / 2400.;
+      load.add(Fx / 2400., iota_x, Fy / 2400., iota_y);
       const auto st = joints::advance_with_contact(*newmark, *solver, load, s);
       converged     = converged && st.converged;
       t += newmark->time_step();
@@ -75,6 +86,18 @@ namespace
         if (st != state)
           return false;
       return true;
+    }
+
+    /// Mean relative displacement w of the pairs in global coordinates.
+    Tensor<1, dim>
+    mean_w() const
+    {
+      Tensor<1, dim> sum;
+      for (unsigned int i = 0; i < m.pairs->size(); ++i)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int c = 0; c < dim; ++c)
+            sum[c] += solver->w[dim * i + k] * (*m.pairs)[i].frame[k][c];
+      return sum / m.pairs->size();
     }
 
     double
@@ -171,5 +194,26 @@ main(int argc, char **argv)
         << (t_close >= t_ref && t_close - dt < t_ref ? "yes" : "NO") << std::endl;
     log << "  no penetration: " << (lowest >= -1e-9 ? "yes" : "NO") << std::endl;
     log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO") << std::endl;
+  }
+
+  {
+    joints::JointParameters jp;
+    jp.model                    = "frictional contact";
+    jp.law.friction_coefficient = 0.5;
+    Run          r(jp, dt);
+    const double g = 9.81, W = 2400. * g, theta = M_PI / 6, T = 0.1;
+    for (unsigned int k = 1; k <= 50; ++k)
+      r.step(-W);
+    const Tensor<1, dim> w0 = r.mean_w();
+    for (unsigned int k = 1; k <= std::lround(T / dt); ++k)
+      r.step(-W, 0.8 * W * std::cos(theta), 0.8 * W * std::sin(theta));
+    const Tensor<1, dim> slip = r.mean_w() - w0;
+    log << "6. oblique load 0.8 W at 30 degrees, mu = 0.5:" << std::endl;
+    testing::check_relative("  slip [m] (0.3 g t^2 / 2)", std::hypot(slip[0], slip[1]),
+                            0.3 * g * T * T / 2, 0.02);
+    testing::check_below("  |slip direction - load direction| [degree]",
+                         std::abs(std::atan2(slip[1], slip[0]) - theta) * 180 / M_PI, 0.1);
+    log << "  all pairs slip, contact problem converged every step: "
+        << (r.all(joints::PairState::slip) && r.converged ? "yes" : "NO") << std::endl;
   }
 }
