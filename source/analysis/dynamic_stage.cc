@@ -66,6 +66,8 @@ namespace archdam::analysis
           p.time_integration, mass_matrix, stiffness_matrix, rayleigh, fe_space->constraints,
           massed_foundation ? massed_foundation->dashpots() : nullptr);
     }
+    if (node_pairs)
+      start_dynamic_joints(*newmark);
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
@@ -94,10 +96,16 @@ namespace archdam::analysis
         {
           TimerOutput::Scope t(timer, "dynamic: steps");
           external_load(n * dt, load);
+          joints::ContactStep contact;
+          const auto          solve =
+            joint_solver ? joints::contact_step_solver(*newmark, *joint_solver, contact)
+                                   : time::NewmarkIntegrator::StepSolver();
           if (massed_foundation)
-            massed_foundation->advance(*newmark, load, current);
+            massed_foundation->advance(*newmark, load, current, solve);
           else
-            newmark->advance(load, current);
+            newmark->advance(load, current, solve);
+          if (joint_solver)
+            check_contact_step(contact, n * dt);
           current.time = n * dt; // no drift from repeated additions
         }
         {
@@ -105,9 +113,15 @@ namespace archdam::analysis
           history->append(monitor->evaluate(current));
           if (pressure)
             pressure->record(current);
+          if (joint_output)
+            joint_output->record(current.time, *joint_solver);
         }
         if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
-          write_fields();
+          {
+            write_fields();
+            if (joint_output)
+              joint_output->write_fields(current.time, *joint_solver);
+          }
 
         if (p.output.progress && (elapsed() - last_report > report_every || n == n_steps))
           {

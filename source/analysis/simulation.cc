@@ -111,9 +111,17 @@ namespace archdam::analysis
     fe_space->pressure_in_water = p.reservoir.has_pressure();
     fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {
       // Contraction joints/Model = glued: the monolithic dam.
-      joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant, c);
+      if (!p.joints.frictional())
+        joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant,
+                               c);
       reservoir::constrain_free_surface(*fe_space, p.reservoir, c);
     });
+    if (p.joints.frictional())
+      {
+        node_pairs = std::make_unique<joints::NodePairs>(*fe_space, joint_faces);
+        screen << "Joints: " << node_pairs->n_joints() << " in frictional contact, "
+               << node_pairs->size() << " node pairs" << std::endl;
+      }
     if (p.reservoir.has_pressure())
       {
         interface_pairs = reservoir::match_interface_faces(*fe_space);
@@ -263,6 +271,9 @@ namespace archdam::analysis
         summary.set("peaks/major principal stress in the dam [Pa]/note",
                     "maximum over quadrature points at field output times");
       }
+
+    if (node_pairs)
+      summarize_joints();
 
     for (const auto &[stage, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       summary.set("wall time [s]/" + stage, seconds);

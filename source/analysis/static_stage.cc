@@ -25,11 +25,15 @@ namespace archdam::analysis
         physics::reservoir::linear_combination(with_water, {{1., &stiffness_matrix},
                                                             {1., &fluid_operators->Q},
                                                             {1., &fluid_operators->G}});
+      const SparseMatrix      &K = fluid_operators ? with_water : stiffness_matrix;
       time::FactorizedOperator stiffness_factor;
-      stiffness_factor.factorize(fluid_operators ? with_water : stiffness_matrix, true);
+      stiffness_factor.factorize(K, true);
       Vector rhs = static_load;
       fe_space->constraints.set_zero(rhs);
-      stiffness_factor.solve(u_static, rhs);
+      if (node_pairs)
+        solve_static_with_joints(K, stiffness_factor, rhs);
+      else
+        stiffness_factor.solve(u_static, rhs);
       fe_space->constraints.distribute(u_static);
       current.u = u_static;
     }

@@ -1,4 +1,9 @@
+#include <archdam/base/input_error.h>
 #include <archdam/joints/joint_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <map>
 
 namespace archdam::joints
 {
@@ -10,7 +15,130 @@ namespace archdam::joints
     prm.add_parameter("Model", model,
                       "How the contraction joints between dam blocks behave: glued = "
                       "the two faces of every joint are tied together (the monolithic "
-                      "dam).",
-                      Patterns::Selection("glued"));
+                      "dam); frictional contact = the joints open, close and slide "
+                      "(Mohr-Coulomb with tension cut-off, numerics.md §3).",
+                      Patterns::Selection("glued|frictional contact"));
+    prm.add_parameter("Solver", solver,
+                      "Frictional contact solver: mixed = the mixed method (the "
+                      "effective matrix factorized once, the contact problem on the "
+                      "node pairs only); monolithic = the reference solver on the "
+                      "full system (penalty, refactorized as the contact states "
+                      "change), for verification and benchmarks.",
+                      Patterns::Selection("mixed|monolithic"));
+    prm.add_parameter("Flexibility coupling", coupling,
+                      "Which entries of the flexibility matrix C the mixed method "
+                      "keeps: all joints = the exact C; neighbouring joints = only "
+                      "the coupling between pairs of the same or adjacent joints "
+                      "(the paper's sparse approximation).",
+                      Patterns::Selection("all joints|neighbouring joints"));
+    prm.add_parameter("Friction coefficient", law.friction_coefficient,
+                      "Coulomb friction coefficient mu of the joint faces.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Cohesion", law.cohesion,
+                      "Cohesion c of the intact joint [Pa].", Patterns::Double(0.));
+    prm.add_parameter("Tensile strength", law.tensile_strength,
+                      "Tensile strength sigma_t of the intact joint [Pa].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Residual cohesion", law.residual_cohesion,
+                      "Cohesion of a pair after it has opened or slipped [Pa].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Residual tensile strength", law.residual_tensile_strength,
+                      "Tensile strength of a pair after it has opened or slipped [Pa].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Initial gap", law.initial_gap,
+                      "Initial normal gap delta_0 of the joints [m] (0 = closed, "
+                      "grouted).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Per joint", per_joint,
+                      "Values for single joints, overriding the ones above: "
+                      "'k: Name = value, ...; ...' with k the joint number (0 = "
+                      "between blocks 0 and 1) and Name one of Friction coefficient, "
+                      "Cohesion, Tensile strength, Residual cohesion, Residual tensile "
+                      "strength, Initial gap.",
+                      Patterns::Anything());
+    prm.add_parameter("Force tolerance", force_tolerance,
+                      "Contact problem convergence: largest change of a pair force in "
+                      "an iteration, relative to the largest pair force.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Gap tolerance", gap_tolerance,
+                      "Contact problem convergence: largest violation of the law in "
+                      "the relative displacements (penetration, opening of a closed "
+                      "pair, slip of a sticking pair) [m].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Maximum iterations", max_iterations,
+                      "Contact iterations allowed in one solve: active-set "
+                      "iterations plus projected Gauss-Seidel sweeps (numerics.md "
+                      "§3; a sweep costs about as much as one matrix-vector product "
+                      "with the flexibility matrix).",
+                      Patterns::Integer(1));
+    prm.add_parameter("Penalty factor", penalty_factor,
+                      "Monolithic solver only: penalty stiffness of a closed pair as a "
+                      "multiple of the largest diagonal entry of the matrix.",
+                      Patterns::Double(1.));
+    prm.add_parameter("On non-convergence", on_non_convergence,
+                      "A step whose contact problem does not converge: stop = end the "
+                      "run with a message naming the joint, place, time and residual; "
+                      "continue = go on and flag the step in the summary.",
+                      Patterns::Selection("stop|continue"));
+    prm.add_parameter("Monitor points", monitor_points,
+                      "Points whose nearest node pair's opening and slip are recorded "
+                      "every step (joint_histories.csv): 'name: x, y, z; ...'.",
+                      Patterns::Anything());
+  }
+
+  JointLaw
+  JointParameters::law_of(const unsigned int k) const
+  {
+    JointLaw result = law;
+    const std::map<std::string, double JointLaw::*> names{
+      {"Friction coefficient", &JointLaw::friction_coefficient},
+      {"Cohesion", &JointLaw::cohesion},
+      {"Tensile strength", &JointLaw::tensile_strength},
+      {"Residual cohesion", &JointLaw::residual_cohesion},
+      {"Residual tensile strength", &JointLaw::residual_tensile_strength},
+      {"Initial gap", &JointLaw::initial_gap}};
+    for (const auto &entry : Utilities::split_string_list(per_joint, ';'))
+      {
+        const auto colon = entry.find(':');
+        const auto bad   = [&](const std::string &why) {
+          return InputError("Contraction joints/Per joint: '" + entry + "': " + why + ".");
+        };
+        if (colon == std::string::npos)
+          throw bad("expected 'k: Name = value, ...'");
+        unsigned int joint = 0;
+        try
+          {
+            joint = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
+          }
+        catch (...)
+          {
+            throw bad("the joint number is not an integer");
+          }
+        for (const auto &assignment :
+             Utilities::split_string_list(entry.substr(colon + 1), ','))
+          {
+            const auto eq = assignment.find('=');
+            if (eq == std::string::npos)
+              throw bad("expected 'Name = value' in '" + assignment + "'");
+            const auto name = Utilities::trim(assignment.substr(0, eq));
+            const auto it   = names.find(name);
+            if (it == names.end())
+              throw bad("unknown name '" + name + "'");
+            double value = 0.;
+            try
+              {
+                value = Utilities::string_to_double(Utilities::trim(assignment.substr(eq + 1)));
+              }
+            catch (...)
+              {
+                throw bad("the value of '" + name + "' is not a number");
+              }
+            if (!(value >= 0.))
+              throw bad("'" + name + "' must be >= 0");
+            if (joint == k)
+              result.*(it->second) = value;
+          }
+      }
+    return result;
   }
 } // namespace archdam::joints

@@ -24,13 +24,20 @@ namespace archdam::time
   void
   FactorizedOperator::factorize(const SparseMatrix &A, const bool positive_definite)
   {
+    factorize(static_cast<Mat>(A), positive_definite);
+  }
+
+  void
+  FactorizedOperator::factorize(Mat mat, const bool positive_definite)
+  {
     if (ksp != nullptr)
       check(KSPDestroy(&ksp));
-    Mat mat = static_cast<Mat>(A);
     check(MatSetOption(mat, MAT_SYMMETRIC, PETSC_TRUE));
     check(MatSetOption(mat, MAT_SPD, positive_definite ? PETSC_TRUE : PETSC_FALSE));
 
-    check(KSPCreate(A.get_mpi_communicator(), &ksp));
+    MPI_Comm comm;
+    check(PetscObjectGetComm(reinterpret_cast<PetscObject>(mat), &comm));
+    check(KSPCreate(comm, &ksp));
     check(KSPSetOperators(ksp, mat, mat));
     check(KSPSetType(ksp, KSPPREONLY));
     PC pc;
@@ -45,5 +52,12 @@ namespace archdam::time
   {
     Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
     check(KSPSolve(ksp, b, x));
+  }
+
+  void
+  FactorizedOperator::solve(Mat X, Mat B) const
+  {
+    Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
+    check(KSPMatSolve(ksp, B, X));
   }
 } // namespace archdam::time

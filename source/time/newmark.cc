@@ -106,7 +106,7 @@ namespace archdam::time
   }
 
   void
-  NewmarkIntegrator::advance(const Vector &load_next, NewmarkState &s)
+  NewmarkIntegrator::advance(const Vector &load_next, NewmarkState &s, const StepSolver &solve)
   {
     // predictors (eq. 2.1)
     up = s.u;
@@ -137,7 +137,10 @@ namespace archdam::time
       }
     constraints.set_zero(rhs);
 
-    effective_operator.solve(da, rhs);
+    if (solve)
+      solve(rhs, da);
+    else
+      effective_operator.solve(da, rhs);
     constraints.distribute(da); // constrained DOFs follow their masters
 
     // correctors (eq. 2.2)
@@ -154,7 +157,8 @@ namespace archdam::time
   NewmarkIntegrator::advance(const Vector              &load_next,
                              NewmarkState              &s,
                              const PrescribedDofs      &prescribed,
-                             const std::vector<double> &u_next)
+                             const std::vector<double> &u_next,
+                             const StepSolver          &solve)
   {
     AssertDimension(u_next.size(), prescribed.dofs.size());
     // State of the prescribed DOFs at t_{n+1} (eq. 2.1-2.2 with da_b fixed by u_next).
@@ -185,7 +189,7 @@ namespace archdam::time
     reduced_load -= tmp;
     prescribed.stiffness_columns.vmult(tmp, prescribed_u);
     reduced_load -= tmp;
-    advance(reduced_load, s);
+    advance(reduced_load, s, solve);
 
     // advance() left the constrained DOFs at their predictors: set them.
     for (Vector *v : {&s.u, &s.v, &s.a})

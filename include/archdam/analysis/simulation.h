@@ -3,6 +3,8 @@
 #include <archdam/analysis/modal_analysis.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_faces.h>
+#include <archdam/joints/joint_output.h>
+#include <archdam/joints/joint_solver.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/histories.h>
@@ -111,6 +113,24 @@ namespace archdam::analysis
     {
       return timer;
     }
+    /// The joints in frictional contact (null for glued joints): node pairs,
+    /// their state after the last stage, and the joint histories of the
+    /// dynamic stage.
+    const joints::NodePairs *
+    joint_pairs() const
+    {
+      return node_pairs.get();
+    }
+    const joints::JointSolver *
+    joint_state() const
+    {
+      return joint_solver.get();
+    }
+    const joints::JointOutput *
+    joint_histories() const
+    {
+      return joint_output.get();
+    }
 
   private:
     void
@@ -131,6 +151,23 @@ namespace archdam::analysis
     /// Fields of the current state, and the stress peak over the dam.
     void
     write_fields();
+
+    // Contraction joints/Model = frictional contact (joint_stages.cc).
+    /// K u = F_static with the joints in contact (the mixed method with K).
+    void
+    solve_static_with_joints(const SparseMatrix             &stiffness,
+                             const time::FactorizedOperator &stiffness_factor,
+                             const Vector                   &rhs);
+    /// The dynamic stage's joint solver with Kbar, from the static state.
+    void
+    start_dynamic_joints(const time::NewmarkIntegrator &newmark);
+    /// Count the contact iterations of the step ending at @p t and stop
+    /// (or flag the step) if it did not converge.
+    void
+    check_contact_step(const joints::ContactStep &step, double t);
+    /// Contact iterations, joint peaks and envelopes into the summary.
+    void
+    summarize_joints();
 
     /// Massed foundation (numerics.md §5): free field from the ground motion
     /// and the transmitting boundary.
@@ -170,5 +207,12 @@ namespace archdam::analysis
     physics::solid::PeakStress               peak_stress{-1e300, {}};
     double                                   peak_stress_time = 0.;
     output::Summary                          summary;
+    std::unique_ptr<joints::NodePairs>       node_pairs;
+    std::unique_ptr<joints::JointSolver>     joint_solver;
+    std::unique_ptr<joints::JointOutput>     joint_output;
+    /// Contact iterations per dynamic step: sum, maximum; flagged steps.
+    unsigned long                            contact_iterations = 0;
+    unsigned int                             max_contact_iterations = 0;
+    std::vector<double>                      non_converged_times;
   };
 } // namespace archdam::analysis

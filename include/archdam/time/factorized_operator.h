@@ -28,9 +28,18 @@ namespace archdam::time
     void
     factorize(const SparseMatrix &A, bool positive_definite);
 
+    /// The same for a matrix PETSc holds directly (kept referenced by PETSc).
+    void
+    factorize(Mat A, bool positive_definite);
+
     /// x = A^{-1} b, one back-substitution.
     void
     solve(Vector &x, const Vector &b) const;
+
+    /// X = A^{-1} B for every column of the dense matrix B at once
+    /// (KSPMatSolve: one multi-column back-substitution, performance.md).
+    void
+    solve(Mat X, Mat B) const;
 
     bool
     is_factorized() const

@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
+#include <functional>
 #include <vector>
 
 namespace archdam::time
@@ -90,9 +91,17 @@ namespace archdam::time
                       const dealii::AffineConstraints<double> &constraints,
                       bool                                     positive_definite);
 
+    /**
+     * Solver of one step's Kbar da = rhs. The default is the back-substitution
+     * with the factorized Kbar; a joint solver puts its predictor, contact
+     * problem and corrector here (numerics.md §3), reading u^p of the step
+     * from predicted_displacement().
+     */
+    using StepSolver = std::function<void(const Vector &rhs, Vector &da)>;
+
     /// Advance @p s from t_n to t_{n+1} = t_n + dt under the load F_{n+1}.
     void
-    advance(const Vector &load_next, NewmarkState &s);
+    advance(const Vector &load_next, NewmarkState &s, const StepSolver &solve = {});
 
     /**
      * Advance with the displacements @p u_next (one per entry of
@@ -109,12 +118,37 @@ namespace archdam::time
     advance(const Vector              &load_next,
             NewmarkState              &s,
             const PrescribedDofs      &prescribed,
-            const std::vector<double> &u_next);
+            const std::vector<double> &u_next,
+            const StepSolver          &solve = {});
 
     double
     time_step() const
     {
       return dt;
+    }
+
+    /// u^p of the step being advanced; u_{n+1} = u^p + beta2 dt^2 da.
+    const Vector &
+    predicted_displacement() const
+    {
+      return up;
+    }
+    /// beta2 dt^2: the displacement per unit acceleration increment.
+    double
+    displacement_factor() const
+    {
+      return p.beta2 * dt * dt;
+    }
+    /// Kbar and its factorization (constant for the run).
+    const SparseMatrix &
+    effective() const
+    {
+      return effective_matrix;
+    }
+    const FactorizedOperator &
+    effective_factor() const
+    {
+      return effective_operator;
     }
 
   private:

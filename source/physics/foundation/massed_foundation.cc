@@ -58,9 +58,10 @@ namespace archdam::physics::foundation
   }
 
   void
-  MassedFoundation::advance(time::NewmarkIntegrator &newmark,
-                            const Vector            &load_next,
-                            time::NewmarkState      &s)
+  MassedFoundation::advance(time::NewmarkIntegrator                   &newmark,
+                            const Vector                              &load_next,
+                            time::NewmarkState                        &s,
+                            const time::NewmarkIntegrator::StepSolver &solve)
   {
     const double t_next = s.time + dt;
     if (mtf)
@@ -68,7 +69,7 @@ namespace archdam::physics::foundation
         auto        start  = std::chrono::steady_clock::now();
         const auto &values = mtf->next_values(t_next);
         update_seconds += seconds_since(start);
-        newmark.advance(load_next, s, prescribed, values);
+        newmark.advance(load_next, s, prescribed, values, solve);
         start = std::chrono::steady_clock::now();
         mtf->record(s.u, s.time);
         update_seconds += seconds_since(start);
@@ -79,7 +80,7 @@ namespace archdam::physics::foundation
         load             = load_next;
         viscous->add_free_field_load(t_next, load);
         update_seconds += seconds_since(start);
-        newmark.advance(load, s);
+        newmark.advance(load, s, solve);
       }
   }
 } // namespace archdam::physics::foundation

@@ -46,9 +46,13 @@ namespace archdam::physics::foundation
     start(const Vector &u0);
 
     /// One step from t_n to t_{n+1} under the load @p load_next (no
-    /// free-field terms in it) at t_{n+1}.
+    /// free-field terms in it) at t_{n+1}; @p solve as in
+    /// NewmarkIntegrator::advance() (e.g. the joints' contact solve).
     void
-    advance(time::NewmarkIntegrator &newmark, const Vector &load_next, time::NewmarkState &s);
+    advance(time::NewmarkIntegrator                    &newmark,
+            const Vector                               &load_next,
+            time::NewmarkState                         &s,
+            const time::NewmarkIntegrator::StepSolver &solve = {});
 
     /// Wall time spent in the boundary update (MTF values and history, or
     /// free-field forces), s.

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <archdam/joints/joint_solver.h>
+#include <archdam/output/summary.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace archdam::joints
+{
+  /**
+   * What the joints leave behind (numerics.md §7), written by rank 0 into the
+   * output directory:
+   *  - joints.pvd with joints_NNNN.vtu: every node pair as a point with its
+   *    joint, opening (gap, m), slip (m), normal and shear stress (Pa,
+   *    compression negative) and state (0 separation, 1 stick, 2 slip);
+   *  - joint_histories.csv: opening and slip of the pair nearest to each of
+   *    `Contraction joints/Monitor points`, every recorded time;
+   *  - joint_envelopes.csv: for each joint and height z the largest opening
+   *    over time; joint_crest.csv: for each joint the largest opening at its
+   *    crest (its highest pairs), where and when;
+   *  - in the summary, the peak opening of each joint with time and place.
+   */
+  class JointOutput
+  {
+  public:
+    JointOutput(const JointParameters &p, const NodePairs &pairs, const std::string &directory,
+                const std::string &stage);
+
+    /// One row of histories, and the running envelopes.
+    void
+    record(double time, const JointSolver &joints);
+    /// One VTU of the pair fields at @p time.
+    void
+    write_fields(double time, const JointSolver &joints);
+    /// Envelope files and the per-joint peaks into @p summary.
+    void
+    finish(output::Summary &summary) const;
+
+    const std::vector<std::string> &
+    columns() const
+    {
+      return names;
+    }
+    const std::vector<std::vector<double>> &
+    rows() const
+    {
+      return table;
+    }
+
+  private:
+    const NodePairs                 &pairs;
+    const std::string                directory, stage;
+    const bool                       writer;
+    std::vector<unsigned int>        monitored;
+    std::vector<std::string>         names;
+    std::vector<std::vector<double>> table;
+    std::ofstream                    csv;
+    std::vector<double>              peak_opening, peak_time;
+    std::vector<std::pair<double, std::string>> pvd_records;
+  };
+} // namespace archdam::joints

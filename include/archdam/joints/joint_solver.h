@@ -1,0 +1,245 @@
+#pragma once
+
+#include <archdam/joints/contact_law.h>
+#include <archdam/joints/joint_parameters.h>
+#include <archdam/joints/node_pairs.h>
+#include <archdam/time/factorized_operator.h>
+#include <archdam/time/newmark.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace archdam::joints
+{
+  /// How the contact problem of one solve went.
+  struct ContactStep
+  {
+    unsigned int iterations   = 0;
+    bool         converged    = false;
+    double       force_change = 0.; ///< last iteration, relative to the largest force
+    double       gap_residual = 0.; ///< largest violation of the law in w [m]
+    unsigned int worst_pair   = 0;  ///< where the law is violated most
+  };
+
+  /**
+   * One implicit solve with joint forces (numerics.md §3):
+   *   A x = r - B^T f,   w = w_base + h B x,   the law at every pair,
+   * where f (3 per pair, local frame) is the force on side 1 (-f on side 2).
+   * The dynamic step has A = Kbar, x = da, w_base = B u^p, h = beta2 dt^2;
+   * the static stage A = K, x = u, w_base = 0, h = 1. The solver keeps the
+   * committed state of every pair (force, relative displacement, state, and
+   * whether its intact strength is lost); solve() starts from it and accept()
+   * commits the new one.
+   */
+  class JointSolver
+  {
+  public:
+    JointSolver(const JointParameters &p, const NodePairs &pairs, double h);
+    virtual ~JointSolver() = default;
+
+    virtual ContactStep
+    solve(const Vector &r, const std::vector<double> &w_base, Vector &x) = 0;
+
+    /// Commit the solved step: pairs that opened or slipped lose their
+    /// intact strength for good (numerics.md §3).
+    void
+    accept();
+
+    /// Start from a committed state (e.g. the static stage's), keeping the damage.
+    void
+    set_state(const JointSolver &other);
+
+    /// A message for a step that did not converge: joint, place, residual.
+    std::string
+    describe(const ContactStep &step) const;
+
+    const NodePairs &pairs;
+    /// Pair values, 3 per pair in the local frame (xi, eta, zeta).
+    std::vector<double>    force, force_committed, w, w_committed;
+    std::vector<PairState> state;
+    std::vector<bool>      damaged;
+
+    /// delta = delta_0 + w_xi of pair i (positive = open).
+    double
+    gap(unsigned int i) const
+    {
+      return laws[i].initial_gap + w[dim * i];
+    }
+    /// |w_t - w_t,0|: the tangential relative displacement since the start.
+    double
+    slip(unsigned int i) const;
+
+  protected:
+    PairStrength
+    strength(unsigned int i) const
+    {
+      return strength_of(laws[i], pairs[i].area, damaged[i]);
+    }
+    /// Largest violation of the law in w over all pairs, and where.
+    double
+    gap_residual(unsigned int &worst) const;
+    /// Largest change of a pair force relative to the largest force.
+    double
+    relative_change(const std::vector<double> &before) const;
+
+    /**
+     * The active-set update of pair i (numerics.md §3) from its force (for
+     * the current state) and relative displacement: separation -> stick when
+     * the gap closes by more than Gap tolerance; stick/slip -> separation
+     * when f_xi exceeds sigma_t A (or the shear capacity becomes negative);
+     * stick -> slip when |f_t| exceeds the capacity by more than Force
+     * tolerance (relative), the slip direction then along f_t; slip -> stick
+     * when the augmented tangential force q = f_t + r dw_t (Alart-Curnier,
+     * r = augmentation, dw_t the slip increment) falls inside the capacity,
+     * else the slip direction becomes q / |q| (a damped update: the
+     * direction moves towards the slip increment by the step r). The
+     * tolerance bands keep a pair exactly at the stick/slip limit from
+     * switching back and forth. Returns whether the state changed or, in
+     * slip, the slip increment is not along the direction (by more than Gap
+     * tolerance, in m).
+     */
+    bool
+    update_state(unsigned int i);
+
+    /// Augmentation r of every pair [N/m], ~ its own stiffness 1 / (h C_tt,ii).
+    std::vector<double> augmentation;
+    /// Unit tangential slip direction of every slipping pair (local frame).
+    std::vector<dealii::Tensor<1, dim>> direction;
+    /// Slip directions from the committed tangential forces.
+    void
+    start_directions();
+
+    const JointParameters &p;
+    const double           h;
+    std::vector<JointLaw>  laws;
+    std::vector<double>    w_initial;
+  };
+
+  /**
+   * The mixed method (numerics.md §3, paper eq. 2.5-2.8): A is factorized
+   * once; the flexibility matrix C = B A^{-1} B^T on the pair DOFs is built
+   * once; each solve is a predictor (one back-substitution), the contact
+   * problem on the pairs alone, and a corrector (a second back-substitution,
+   * only if a force changed).
+   * The contact problem w = s - h C f with the law at every pair is solved
+   * by an active-set (semi-smooth Newton) iteration: with the states and
+   * slip directions fixed, the law is linear in f (stick: w = w_target in
+   * all three directions; slip: w_xi = -delta_0 and f_t = (c A - mu f_xi) d;
+   * separation: f = 0), a dense system on the forces of the closed pairs
+   * solved by LU; then update_state() on every pair; repeat until no state
+   * or direction changes. All pairs are coupled through C at once, so a
+   * rigid block on several pairs stops or slides as a whole (a pair-by-pair
+   * Gauss-Seidel sweep cycles there between stick and slip).
+   */
+  class MixedJointSolver : public JointSolver
+  {
+  public:
+    MixedJointSolver(const JointParameters &p, const NodePairs &pairs, double h,
+                     const time::FactorizedOperator &A_factor);
+
+    ContactStep
+    solve(const Vector &r, const std::vector<double> &w_base, Vector &x) override;
+
+    /// Dense C (3 n_pairs squared, column major).
+    const std::vector<double> &
+    flexibility() const
+    {
+      return C;
+    }
+    /// Wall time of building C [s].
+    double build_time = 0.;
+
+  private:
+    /// Active-set iterations before projected Gauss-Seidel takes over, and
+    /// allowed for each try of the states Gauss-Seidel reaches.
+    static constexpr unsigned int active_set_limit = 30, active_set_polish = 10;
+
+    /// w = s - h C f.
+    void
+    set_relative_displacement();
+    /// The forces from the law with the states and slip directions fixed
+    /// (one dense LU on the closed pairs), then w.
+    void
+    solve_with_fixed_states();
+    /// Up to @p limit active-set iterations; true if they converged.
+    bool
+    active_set_iteration(ContactStep &step, unsigned int limit);
+    /// Projected Gauss-Seidel sweeps from the committed forces until the law
+    /// holds to the tolerances or the iterations run out.
+    void
+    projected_gauss_seidel(ContactStep &step);
+
+    const time::FactorizedOperator &A_factor;
+    std::vector<double>             C;
+    /// Relative displacement of the pairs at zero pair forces.
+    std::vector<double> s;
+    Vector              rhs, correction;
+  };
+
+  /**
+   * C = B A^{-1} B^T, dense, column major, on every rank: the columns
+   * A^{-1} B^T e_j are solved @p block_size at a time (block_size = 1: one
+   * back-substitution per column). With @p neighbours_only the coupling of
+   * pairs on joints more than one apart is dropped (the paper's sparse
+   * approximation).
+   */
+  std::vector<double>
+  flexibility_matrix(const NodePairs &pairs, const time::FactorizedOperator &A_factor,
+                     const Vector &layout, unsigned int block_size, bool neighbours_only);
+
+  /// The augmentation of every pair from C: r_i = 1 / (h C_tt,ii), the mean
+  /// of its two tangential diagonal entries (the pair's own stiffness
+  /// including everything it moves, e.g. a whole block).
+  std::vector<double>
+  augmentation_of(const std::vector<double> &C, double h);
+
+  /**
+   * The monolithic reference (numerics.md §3): the same law enforced on the
+   * full system by penalty springs between the two sides of every closed pair
+   * (all three directions when it sticks, the normal only when it slips, with
+   * the friction force as a load), the penalized matrix refactorized at every
+   * iteration of the contact states. The penalty stiffness is Penalty factor
+   * times the largest diagonal entry of A (over h), so the law holds to
+   * |f| / kappa in w. The stick/slip decision uses the augmentation of the
+   * mixed method (from the diagonal of C, built once at the first solve), so
+   * both iterate on the same criterion.
+   */
+  class MonolithicJointSolver : public JointSolver
+  {
+  public:
+    MonolithicJointSolver(const JointParameters &p, const NodePairs &pairs, double h,
+                          const SparseMatrix &A, const time::FactorizedOperator &A_factor);
+    ~MonolithicJointSolver() override;
+
+    ContactStep
+    solve(const Vector &r, const std::vector<double> &w_base, Vector &x) override;
+
+  private:
+    const SparseMatrix             &A;
+    const time::FactorizedOperator &A_factor;
+    Mat                                      pattern = nullptr; ///< A with room for the springs
+    double                                   kappa   = 0.;
+  };
+
+  /**
+   * The solve of one Newmark step with joint forces (numerics.md §3), for
+   * NewmarkIntegrator::advance(): @p solver's predictor, contact problem and
+   * corrector with w_base = B u^p; the pair state is committed and how the
+   * contact problem went is left in @p step (the caller decides what a step
+   * that did not converge means).
+   */
+  time::NewmarkIntegrator::StepSolver
+  contact_step_solver(const time::NewmarkIntegrator &newmark, JointSolver &solver,
+                      ContactStep &step);
+
+  /// One Newmark step with joint forces: advance() with contact_step_solver().
+  ContactStep
+  advance_with_contact(time::NewmarkIntegrator &newmark, JointSolver &solver,
+                       const Vector &load_next, time::NewmarkState &s);
+
+  /// The solver the parameters choose (Contraction joints/Solver).
+  std::unique_ptr<JointSolver>
+  make_joint_solver(const JointParameters &p, const NodePairs &pairs, double h,
+                    const SparseMatrix &A, const time::FactorizedOperator &A_factor);
+} // namespace archdam::joints

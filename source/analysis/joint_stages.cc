@@ -1,0 +1,98 @@
+#include <archdam/analysis/simulation.h>
+#include <archdam/base/input_error.h>
+
+#include <algorithm>
+
+namespace archdam::analysis
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// Contraction joints/On non-convergence: stop with the message, or go on
+    /// (the caller flags the step).
+    void
+    check_convergence(const joints::JointParameters &p, const joints::JointSolver &solver,
+                      const joints::ContactStep &step, const std::string &when)
+    {
+      if (!step.converged && p.on_non_convergence == "stop")
+        throw InputError("Contraction joints: " + when + ", " + solver.describe(step) +
+                         ". Set 'On non-convergence = continue' to go on and flag such "
+                         "steps, or adjust Maximum iterations or the tolerances.");
+    }
+  } // namespace
+
+  /**
+   * Static stage with the joints in frictional contact (numerics.md §3, last
+   * line): the mixed method with K in place of Kbar, the whole static load in
+   * one step from the unloaded, closed joints; gravity is carried through the
+   * closed joints.
+   */
+  void
+  Simulation::solve_static_with_joints(const SparseMatrix             &stiffness,
+                                       const time::FactorizedOperator &stiffness_factor,
+                                       const Vector                   &rhs)
+  {
+    joint_solver =
+      joints::make_joint_solver(p.joints, *node_pairs, 1., stiffness, stiffness_factor);
+    const std::vector<double> unloaded(dim * node_pairs->size(), 0.);
+    const auto                step = joint_solver->solve(rhs, unloaded, u_static);
+    if (!step.converged)
+      non_converged_times.push_back(0.);
+    check_convergence(p.joints, *joint_solver, step, "static stage");
+    joint_solver->accept();
+    summary.set("static/contact iterations", step.iterations);
+    if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
+      summary.set("static/time to build the flexibility matrix [s]", mixed->build_time);
+
+    joints::JointOutput static_output(p.joints, *node_pairs, p.output.directory, "static");
+    static_output.record(0., *joint_solver);
+    static_output.write_fields(0., *joint_solver);
+    static_output.finish(summary);
+  }
+
+  void
+  Simulation::start_dynamic_joints(const time::NewmarkIntegrator &newmark)
+  {
+    auto solver = joints::make_joint_solver(p.joints, *node_pairs, newmark.displacement_factor(),
+                                            newmark.effective(), newmark.effective_factor());
+    if (joint_solver) // the static state: forces, relative displacements, damage
+      solver->set_state(*joint_solver);
+    joint_solver = std::move(solver);
+    joint_output = std::make_unique<joints::JointOutput>(p.joints, *node_pairs,
+                                                         p.output.directory, "dynamic");
+    joint_output->record(0., *joint_solver);
+    if (p.output.field_interval > 0)
+      joint_output->write_fields(0., *joint_solver);
+  }
+
+  void
+  Simulation::check_contact_step(const joints::ContactStep &step, const double t)
+  {
+    contact_iterations += step.iterations;
+    max_contact_iterations = std::max(max_contact_iterations, step.iterations);
+    if (!step.converged)
+      non_converged_times.push_back(t);
+    check_convergence(p.joints, *joint_solver, step, "t = " + std::to_string(t) + " s");
+  }
+
+  void
+  Simulation::summarize_joints()
+  {
+    summary.set("joints/node pairs", node_pairs->size());
+    summary.set("joints/solver", p.joints.solver);
+    if (joint_output)
+      {
+        const double steps = joint_output->rows().size() - 1;
+        summary.set("dynamic/contact iterations per step/average", contact_iterations / steps);
+        summary.set("dynamic/contact iterations per step/maximum", max_contact_iterations);
+        if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
+          summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
+        joint_output->finish(summary);
+      }
+    summary.set("joints/steps not converged", non_converged_times.size());
+    for (unsigned int k = 0; k < std::min<std::size_t>(non_converged_times.size(), 20); ++k)
+      summary.set("joints/steps not converged at [s]/" + std::to_string(k),
+                  non_converged_times[k]);
+  }
+} // namespace archdam::analysis

@@ -1,0 +1,184 @@
+#include <archdam/base/input_error.h>
+#include <archdam/joints/joint_output.h>
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <iomanip>
+#include <map>
+
+namespace archdam::joints
+{
+  using namespace dealii;
+
+  JointOutput::JointOutput(const JointParameters &p, const NodePairs &pairs,
+                           const std::string &directory, const std::string &stage)
+    : pairs(pairs)
+    , directory(directory)
+    , stage(stage)
+    , writer(Utilities::MPI::this_mpi_process(pairs.communicator()) == 0)
+    , peak_opening(pairs.size(), 0.)
+    , peak_time(pairs.size(), 0.)
+  {
+    names.push_back("time [s]");
+    for (const auto &entry : Utilities::split_string_list(p.monitor_points, ';'))
+      {
+        const auto colon = entry.find(':');
+        const auto xyz   = colon == std::string::npos ?
+                             std::vector<std::string>() :
+                             Utilities::split_string_list(entry.substr(colon + 1), ',');
+        if (xyz.size() != dim)
+          throw InputError("Contraction joints/Monitor points: '" + entry +
+                           "' is not 'name: x, y, z'.");
+        Point<dim> x;
+        try
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              x[d] = Utilities::string_to_double(xyz[d]);
+          }
+        catch (...)
+          {
+            throw InputError("Contraction joints/Monitor points: '" + entry +
+                             "' has a coordinate that is not a number.");
+          }
+        if (pairs.size() == 0)
+          throw InputError("Contraction joints/Monitor points: the model has no joint "
+                           "node pairs to monitor.");
+        const auto name = Utilities::trim(entry.substr(0, colon));
+        monitored.push_back(pairs.nearest(x));
+        names.push_back(name + ".opening [m]");
+        names.push_back(name + ".slip [m]");
+      }
+    if (writer)
+      {
+        csv.open(directory + "/joint_histories_" + stage + ".csv");
+        for (unsigned int c = 0; c < names.size(); ++c)
+          csv << (c ? "," : "") << names[c];
+        csv << '\n';
+      }
+  }
+
+  void
+  JointOutput::record(const double time, const JointSolver &joints)
+  {
+    std::vector<double> row{time};
+    for (const unsigned int i : monitored)
+      {
+        row.push_back(std::max(0., joints.gap(i)));
+        row.push_back(joints.slip(i));
+      }
+    table.push_back(row);
+    if (writer)
+      {
+        csv << std::setprecision(10);
+        for (unsigned int c = 0; c < row.size(); ++c)
+          csv << (c ? "," : "") << row[c];
+        csv << std::endl;
+      }
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (joints.gap(i) > peak_opening[i])
+        {
+          peak_opening[i] = joints.gap(i);
+          peak_time[i]    = time;
+        }
+  }
+
+  void
+  JointOutput::write_fields(const double time, const JointSolver &joints)
+  {
+    if (!writer)
+      return;
+    const std::string name =
+      "joints_" + stage + "_" + Utilities::int_to_string(pvd_records.size(), 4) + ".vtu";
+    std::ofstream vtu(directory + "/" + name);
+    const unsigned int n = pairs.size();
+    vtu << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+        << "<UnstructuredGrid><Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n
+        << "\">\n<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">\n"
+        << std::setprecision(10);
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << pairs[i].position << '\n';
+    vtu << "</DataArray></Points>\n<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "
+           "format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << i << ' ';
+    vtu << "\n</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << i + 1 << ' ';
+    vtu << "\n</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n; ++i)
+      vtu << "1 "; // VTK_VERTEX
+    vtu << "\n</DataArray>\n</Cells>\n<PointData>\n";
+    const auto field = [&](const std::string &field_name, auto value) {
+      vtu << "<DataArray type=\"Float64\" Name=\"" << field_name << "\" format=\"ascii\">\n";
+      for (unsigned int i = 0; i < n; ++i)
+        vtu << value(i) << ' ';
+      vtu << "\n</DataArray>\n";
+    };
+    field("joint", [&](unsigned int i) { return pairs[i].joint; });
+    field("opening", [&](unsigned int i) { return std::max(0., joints.gap(i)); });
+    field("slip", [&](unsigned int i) { return joints.slip(i); });
+    field("normal_stress", [&](unsigned int i) { return joints.force[dim * i] / pairs[i].area; });
+    field("shear_stress", [&](unsigned int i) {
+      return std::hypot(joints.force[dim * i + 1], joints.force[dim * i + 2]) / pairs[i].area;
+    });
+    field("state", [&](unsigned int i) { return static_cast<int>(joints.state[i]); });
+    vtu << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+
+    pvd_records.emplace_back(time, name);
+    std::ofstream pvd(directory + "/joints_" + stage + ".pvd");
+    DataOutBase::write_pvd_record(pvd, pvd_records);
+  }
+
+  void
+  JointOutput::finish(output::Summary &summary) const
+  {
+    // Envelope along the height: the largest opening at each z of each joint.
+    std::map<std::pair<unsigned int, double>, double> along_height;
+    std::map<unsigned int, double>                    crest_z;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const double z   = std::round(pairs[i].position[2] * 1e6) / 1e6;
+        auto        &env = along_height[{pairs[i].joint, z}];
+        env              = std::max(env, peak_opening[i]);
+        crest_z[pairs[i].joint] =
+          std::max(crest_z.count(pairs[i].joint) ? crest_z[pairs[i].joint] : -1e300, z);
+      }
+    std::vector<int> peak_of(pairs.n_joints(), -1), crest_of(pairs.n_joints(), -1);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const unsigned int j = pairs[i].joint;
+        if (peak_of[j] < 0 || peak_opening[i] > peak_opening[peak_of[j]])
+          peak_of[j] = i;
+        if (std::round(pairs[i].position[2] * 1e6) / 1e6 == crest_z[j] &&
+            (crest_of[j] < 0 || peak_opening[i] > peak_opening[crest_of[j]]))
+          crest_of[j] = i;
+      }
+    if (writer)
+      {
+        std::ofstream env(directory + "/joint_envelopes_" + stage + ".csv");
+        env << "joint,z [m],max opening [m]\n" << std::setprecision(10);
+        for (const auto &[key, value] : along_height)
+          env << key.first << ',' << key.second << ',' << value << '\n';
+        std::ofstream crest(directory + "/joint_crest_" + stage + ".csv");
+        crest << "joint,x [m],y [m],z [m],max opening [m],time [s]\n" << std::setprecision(10);
+        for (unsigned int j = 0; j < pairs.n_joints(); ++j)
+          if (crest_of[j] >= 0)
+            crest << j << ',' << pairs[crest_of[j]].position[0] << ','
+                  << pairs[crest_of[j]].position[1] << ',' << pairs[crest_of[j]].position[2]
+                  << ',' << peak_opening[crest_of[j]] << ',' << peak_time[crest_of[j]] << '\n';
+      }
+    for (unsigned int j = 0; j < pairs.n_joints(); ++j)
+      if (peak_of[j] >= 0)
+        {
+          const std::string key = stage + "/joints/joint " + std::to_string(j) + "/peak opening";
+          summary.set(key + " [m]", peak_opening[peak_of[j]]);
+          summary.set(key + " time [s]", peak_time[peak_of[j]]);
+          for (unsigned int d = 0; d < dim; ++d)
+            summary.set(key + " " + std::string(1, "xyz"[d]) + " [m]",
+                        pairs[peak_of[j]].position[d]);
+        }
+  }
+} // namespace archdam::joints

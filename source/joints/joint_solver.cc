@@ -1,0 +1,212 @@
+#include <archdam/joints/joint_solver.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace archdam::joints
+{
+  using namespace dealii;
+
+  JointSolver::JointSolver(const JointParameters &p, const NodePairs &pairs, const double h)
+    : pairs(pairs)
+    , force(dim * pairs.size(), 0.)
+    , force_committed(dim * pairs.size(), 0.)
+    , w(dim * pairs.size(), 0.)
+    , w_committed(dim * pairs.size(), 0.)
+    , state(pairs.size(), PairState::stick)
+    , damaged(pairs.size(), false)
+    , p(p)
+    , h(h)
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      laws.push_back(p.law_of(pairs[i].joint));
+  }
+
+  void
+  JointSolver::accept()
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      damaged[i] = damaged[i] || state[i] != PairState::stick;
+    force_committed = force;
+    w_committed     = w;
+  }
+
+  void
+  JointSolver::set_state(const JointSolver &other)
+  {
+    force           = other.force;
+    force_committed = other.force_committed;
+    w               = other.w;
+    w_committed     = other.w_committed;
+    state           = other.state;
+    damaged         = other.damaged;
+  }
+
+  double
+  JointSolver::slip(const unsigned int i) const
+  {
+    return std::hypot(w[dim * i + 1], w[dim * i + 2]);
+  }
+
+  double
+  JointSolver::gap_residual(unsigned int &worst) const
+  {
+    double largest = 0.;
+    worst          = 0;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        double r = state[i] == PairState::separation ? std::max(0., -gap(i)) : std::abs(gap(i));
+        if (state[i] == PairState::stick)
+          r = std::max(r, std::hypot(w[dim * i + 1] - w_committed[dim * i + 1],
+                                     w[dim * i + 2] - w_committed[dim * i + 2]));
+        if (r > largest)
+          {
+            largest = r;
+            worst   = i;
+          }
+      }
+    return largest;
+  }
+
+  double
+  JointSolver::relative_change(const std::vector<double> &before) const
+  {
+    double change = 0., scale = 0.;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        double d2 = 0., f2 = 0.;
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            d2 += std::pow(force[dim * i + k] - before[dim * i + k], 2);
+            f2 += std::pow(force[dim * i + k], 2);
+          }
+        change = std::max(change, std::sqrt(d2));
+        scale  = std::max(scale, std::sqrt(f2));
+      }
+    return change == 0. ? 0. : change / scale;
+  }
+
+  void
+  JointSolver::start_directions()
+  {
+    direction.assign(pairs.size(), Tensor<1, dim>());
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const double t = std::hypot(force_committed[dim * i + 1], force_committed[dim * i + 2]);
+        if (t > 0)
+          for (const unsigned int k : {1u, 2u})
+            direction[i][k] = force_committed[dim * i + k] / t;
+      }
+  }
+
+  bool
+  JointSolver::update_state(const unsigned int i)
+  {
+    double      *f  = &force[dim * i];
+    Tensor<1, dim> &d = direction[i];
+    const auto   strength_i = strength(i);
+    const double f_norm     = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    const double t          = std::hypot(f[1], f[2]);
+    const double tau        = strength_i.shear_capacity(f[0]);
+    // A pair that opens or slips loses its intact strength at once, also
+    // within the iteration (numerics.md §3): strength only decreases, so the
+    // iteration cannot cycle between a broken and an intact pair.
+    const auto separate = [&] {
+      state[i]   = PairState::separation;
+      damaged[i] = true;
+      std::fill(f, f + dim, 0.);
+      return true;
+    };
+    switch (state[i])
+      {
+        case PairState::separation:
+          if (gap(i) < -p.gap_tolerance)
+            {
+              state[i] = PairState::stick;
+              return true;
+            }
+          return false;
+        case PairState::stick:
+          if (f[0] > strength_i.tensile_force + p.force_tolerance * f_norm)
+            return separate();
+          if (t > tau + p.force_tolerance * f_norm)
+            {
+              state[i]   = PairState::slip;
+              damaged[i] = true;
+              d[1]       = f[1] / t;
+              d[2]     = f[2] / t;
+              return true;
+            }
+          return false;
+        case PairState::slip:
+          {
+            if (f[0] > strength_i.tensile_force + p.force_tolerance * f_norm || tau < 0)
+              return separate();
+            // the augmented tangential force q = f_t + r dw_t (Alart-Curnier):
+            // stick when it falls inside the capacity, else the new direction
+            const double s1 = w[dim * i + 1] - w_committed[dim * i + 1],
+                         s2 = w[dim * i + 2] - w_committed[dim * i + 2];
+            const double q1 = f[1] + augmentation[i] * s1, q2 = f[2] + augmentation[i] * s2;
+            const double q  = std::hypot(q1, q2);
+            if (q < tau - p.force_tolerance * f_norm)
+              {
+                state[i] = PairState::stick;
+                return true;
+              }
+            // the part of the slip increment not along the friction force [m]
+            const double along  = s1 * d[1] + s2 * d[2];
+            const double misfit = std::hypot(s1 - along * d[1], s2 - along * d[2]);
+            if (q > 0)
+              {
+                d[1] = q1 / q;
+                d[2] = q2 / q;
+              }
+            return misfit > p.gap_tolerance || along < -p.gap_tolerance;
+          }
+      }
+    return false;
+  }
+
+  std::string
+  JointSolver::describe(const ContactStep &step) const
+  {
+    const auto        &pair = pairs[step.worst_pair];
+    std::ostringstream s;
+    s << "joint " << pair.joint << ", node pair at (" << pair.position[0] << ", "
+      << pair.position[1] << ", " << pair.position[2] << "): the contact problem did not "
+      << "converge in " << step.iterations << " iterations (law residual "
+      << step.gap_residual << " m, last relative force change " << step.force_change
+      << "; tolerances " << p.gap_tolerance << " m and " << p.force_tolerance << ")";
+    return s.str();
+  }
+
+  time::NewmarkIntegrator::StepSolver
+  contact_step_solver(const time::NewmarkIntegrator &newmark, JointSolver &solver,
+                      ContactStep &step)
+  {
+    return [&newmark, &solver, &step](const Vector &rhs, Vector &da) {
+      std::vector<double> w_base;
+      solver.pairs.relative_displacement(newmark.predicted_displacement(), w_base);
+      step = solver.solve(rhs, w_base, da);
+      solver.accept();
+    };
+  }
+
+  ContactStep
+  advance_with_contact(time::NewmarkIntegrator &newmark, JointSolver &solver,
+                       const Vector &load_next, time::NewmarkState &s)
+  {
+    ContactStep step;
+    newmark.advance(load_next, s, contact_step_solver(newmark, solver, step));
+    return step;
+  }
+
+  std::unique_ptr<JointSolver>
+  make_joint_solver(const JointParameters &p, const NodePairs &pairs, const double h,
+                    const SparseMatrix &A, const time::FactorizedOperator &A_factor)
+  {
+    if (p.solver == "monolithic")
+      return std::make_unique<MonolithicJointSolver>(p, pairs, h, A, A_factor);
+    return std::make_unique<MixedJointSolver>(p, pairs, h, A_factor);
+  }
+} // namespace archdam::joints

@@ -1,0 +1,379 @@
+#include <archdam/joints/joint_solver.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <chrono>
+#include <cmath>
+
+namespace archdam::joints
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void
+    check(const PetscErrorCode ierr)
+    {
+      AssertThrow(ierr == 0, ExcPETScError(ierr));
+    }
+
+    /// Entries of row k of B for pair i: (global DOF, value) over free DOFs;
+    /// w_k = sum value * u[DOF] (side 2 minus side 1, projected on frame k).
+    template <typename F>
+    void
+    for_row_of_B(const NodePair &pair, const unsigned int k, F &&action)
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          if (pair.free_2[c])
+            action(pair.dofs_2[c], pair.frame[k][c]);
+          if (pair.free_1[c])
+            action(pair.dofs_1[c], -pair.frame[k][c]);
+        }
+    }
+  } // namespace
+
+  std::vector<double>
+  flexibility_matrix(const NodePairs &pairs, const time::FactorizedOperator &A_factor,
+                     const Vector &layout, const unsigned int block_size,
+                     const bool neighbours_only)
+  {
+    const unsigned int m        = dim * pairs.size();
+    const auto         range    = layout.local_range();
+    const auto         n_local  = range.second - range.first;
+    const auto         is_owned = [&](const types::global_dof_index d) {
+      return d >= range.first && d < range.second;
+    };
+    MPI_Comm comm = pairs.communicator();
+    std::vector<double> C(static_cast<std::size_t>(m) * m, 0.);
+
+    for (unsigned int start = 0; start < m; start += block_size)
+      {
+        const unsigned int nb = std::min(block_size, m - start);
+        // Right-hand sides B^T e_j, j = start ... start + nb - 1.
+        Mat rhs, solution;
+        check(MatCreateDense(comm, n_local, PETSC_DECIDE, layout.size(), nb, nullptr, &rhs));
+        PetscScalar *a;
+        check(MatDenseGetArray(rhs, &a));
+        std::fill(a, a + n_local * nb, 0.);
+        for (unsigned int j = 0; j < nb; ++j)
+          for_row_of_B(pairs[(start + j) / dim], (start + j) % dim,
+                       [&](const types::global_dof_index d, const double v) {
+                         if (is_owned(d))
+                           a[j * n_local + (d - range.first)] += v;
+                       });
+        check(MatDenseRestoreArray(rhs, &a));
+        check(MatAssemblyBegin(rhs, MAT_FINAL_ASSEMBLY));
+        check(MatAssemblyEnd(rhs, MAT_FINAL_ASSEMBLY));
+        check(MatDuplicate(rhs, MAT_DO_NOT_COPY_VALUES, &solution));
+        A_factor.solve(solution, rhs);
+
+        // Columns of C: B A^{-1} B^T e_j, the owners' parts summed over ranks.
+        std::vector<double> block(static_cast<std::size_t>(m) * nb, 0.);
+        const PetscScalar  *x;
+        check(MatDenseGetArrayRead(solution, &x));
+        for (unsigned int j = 0; j < nb; ++j)
+          for (unsigned int i = 0; i < pairs.size(); ++i)
+            for (unsigned int k = 0; k < dim; ++k)
+              for_row_of_B(pairs[i], k, [&](const types::global_dof_index d, const double v) {
+                if (is_owned(d))
+                  block[j * m + dim * i + k] += v * x[j * n_local + (d - range.first)];
+              });
+        check(MatDenseRestoreArrayRead(solution, &x));
+        check(MatDestroy(&rhs));
+        check(MatDestroy(&solution));
+        Utilities::MPI::sum(block, comm, block);
+        std::copy(block.begin(), block.end(), C.begin() + static_cast<std::size_t>(start) * m);
+      }
+
+    if (neighbours_only)
+      for (unsigned int j = 0; j < m; ++j)
+        for (unsigned int i = 0; i < m; ++i)
+          if (std::abs(static_cast<int>(pairs[i / dim].joint) -
+                       static_cast<int>(pairs[j / dim].joint)) > 1)
+            C[static_cast<std::size_t>(j) * m + i] = 0.;
+    return C;
+  }
+
+  std::vector<double>
+  augmentation_of(const std::vector<double> &C, const double h)
+  {
+    const unsigned int  m = std::lround(std::sqrt(static_cast<double>(C.size())));
+    std::vector<double> r(m / dim);
+    for (unsigned int i = 0; i < r.size(); ++i)
+      {
+        const auto diagonal = [&](const unsigned int k) {
+          return C[static_cast<std::size_t>(dim * i + k) * m + dim * i + k];
+        };
+        r[i] = 2. / (h * (diagonal(1) + diagonal(2)));
+      }
+    return r;
+  }
+
+  MixedJointSolver::MixedJointSolver(const JointParameters &p, const NodePairs &pairs,
+                                     const double h, const time::FactorizedOperator &A_factor)
+    : JointSolver(p, pairs, h)
+    , A_factor(A_factor)
+  {}
+
+  void
+  MixedJointSolver::set_relative_displacement()
+  {
+    const unsigned int m = dim * pairs.size();
+    w                    = s;
+    for (unsigned int j = 0; j < m; ++j)
+      if (force[j] != 0.)
+        for (unsigned int k = 0; k < m; ++k)
+          w[k] -= h * C[static_cast<std::size_t>(j) * m + k] * force[j];
+  }
+
+  void
+  MixedJointSolver::solve_with_fixed_states()
+  {
+    // The law with the states and directions fixed is linear in the forces
+    // of the closed pairs (numerics.md §3): stick: w = w_target in all three
+    // directions; slip: w_xi = -delta_0 and f_t = (c A - mu f_xi) d.
+    const unsigned int        m = dim * pairs.size();
+    std::vector<unsigned int> closed;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (state[i] != PairState::separation)
+        closed.push_back(i);
+    const unsigned int       n = dim * closed.size();
+    LAPACKFullMatrix<double> L(n, n);
+    dealii::Vector<double>   f(n);
+    for (unsigned int a = 0; a < closed.size(); ++a)
+      {
+        const unsigned int i = closed[a];
+        for (unsigned int k = 0; k < dim; ++k)
+          {
+            const unsigned int row = dim * a + k;
+            if (k > 0 && state[i] == PairState::slip)
+              {
+                // f_k - (c A - mu f_xi) d_k = 0
+                const auto strength_i = strength(i);
+                L(row, row)           = 1.;
+                L(row, dim * a)       = strength_i.friction * direction[i][k];
+                f(row)                = strength_i.cohesion_force * direction[i][k];
+                continue;
+              }
+            // (h C f)_ik = s_ik - w_target,k
+            for (unsigned int b = 0; b < closed.size(); ++b)
+              for (unsigned int l = 0; l < dim; ++l)
+                L(row, dim * b + l) =
+                  h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+            f(row) = s[dim * i + k] - (k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k]);
+          }
+      }
+    if (n > 0)
+      {
+        L.compute_lu_factorization();
+        L.solve(f);
+      }
+    std::fill(force.begin(), force.end(), 0.);
+    for (unsigned int a = 0; a < closed.size(); ++a)
+      for (unsigned int k = 0; k < dim; ++k)
+        force[dim * closed[a] + k] = f(dim * a + k);
+    set_relative_displacement();
+  }
+
+  bool
+  MixedJointSolver::active_set_iteration(ContactStep &step, const unsigned int limit)
+  {
+    std::vector<double> before;
+    for (unsigned int k = 0; k < limit; ++k)
+      {
+        ++step.iterations;
+        before = force;
+        solve_with_fixed_states();
+        bool changed = false;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          changed = update_state(i) || changed;
+        step.force_change = relative_change(before);
+        step.gap_residual = gap_residual(step.worst_pair);
+        if (!changed && step.gap_residual <= p.gap_tolerance)
+          return step.converged = true;
+      }
+    return false;
+  }
+
+  void
+  MixedJointSolver::projected_gauss_seidel(ContactStep &step)
+  {
+    // Pair by pair, component by component: the normal force towards closing
+    // the gap, then the tangential force towards no slip, each projected on
+    // the law (numerics.md §3) and scaled by the pair's own flexibility
+    // (a projected coordinate / block-gradient step: for fixed friction
+    // bounds this is descent on a convex quadratic, so it converges). A pair
+    // whose trial force exceeds its strength opens or slips and is damaged.
+    // Every few sweeps, the states reached are handed to the active set
+    // (exact solution when they are right).
+    const unsigned int m = dim * pairs.size();
+    force                = force_committed;
+    set_relative_displacement();
+    const auto add_force = [&](const unsigned int j, const double df) {
+      if (df == 0.)
+        return;
+      force[j] += df;
+      const double *column = &C[static_cast<std::size_t>(j) * m];
+      for (unsigned int k = 0; k < m; ++k)
+        w[k] -= h * column[k] * df;
+    };
+    std::vector<double> before, tried_states, pgs_force, pgs_w;
+    std::vector<bool>   pgs_damage;
+    while (step.iterations < p.max_iterations)
+      {
+        ++step.iterations;
+        before = force;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          {
+            const auto entry = [&](const unsigned int k, const unsigned int l) {
+              return h * C[static_cast<std::size_t>(dim * i + l) * m + dim * i + k];
+            };
+            // normal: f_xi <= min(sigma_t A, c A / mu), else the pair opens
+            auto       strength_i = strength(i);
+            const auto limit      = [&] {
+              return strength_i.friction > 0. ?
+                       std::min(strength_i.tensile_force,
+                                strength_i.cohesion_force / strength_i.friction) :
+                       strength_i.tensile_force;
+            };
+            double f_xi = force[dim * i] + gap(i) / entry(0, 0);
+            if (f_xi > limit())
+              {
+                damaged[i] = true;
+                strength_i = strength(i);
+                f_xi       = 0.;
+              }
+            add_force(dim * i, f_xi - force[dim * i]);
+            // tangential: f_t + (w_t - w_t,n) / lambda_max, into the disk of
+            // radius c A - mu f_xi
+            const double a = entry(1, 1), b = entry(1, 2), d = entry(2, 2);
+            const double lambda =
+              0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
+            double q1 = force[dim * i + 1] + (w[dim * i + 1] - w_committed[dim * i + 1]) / lambda;
+            double q2 = force[dim * i + 2] + (w[dim * i + 2] - w_committed[dim * i + 2]) / lambda;
+            double capacity = std::max(0., strength_i.shear_capacity(force[dim * i]));
+            double q        = std::hypot(q1, q2);
+            if (q > capacity && !damaged[i])
+              {
+                damaged[i] = true;
+                strength_i = strength(i);
+                capacity   = std::max(0., strength_i.shear_capacity(force[dim * i]));
+              }
+            if (q > capacity)
+              {
+                q1 *= capacity / q;
+                q2 *= capacity / q;
+              }
+            add_force(dim * i + 1, q1 - force[dim * i + 1]);
+            add_force(dim * i + 2, q2 - force[dim * i + 2]);
+          }
+        set_relative_displacement(); // no drift from the incremental updates
+
+        // The states the forces show.
+        std::vector<double> states(pairs.size());
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          {
+            const double *f        = &force[dim * i];
+            const double  t        = std::hypot(f[1], f[2]);
+            const double  capacity = strength(i).shear_capacity(f[0]);
+            state[i]               = f[0] == 0. && t == 0. ? PairState::separation :
+                                     t >= capacity * (1. - 1e-6) ? PairState::slip :
+                                                                 PairState::stick;
+            if (state[i] == PairState::slip && t > 0.)
+              for (const unsigned int k : {1u, 2u})
+                direction[i][k] = f[k] / t;
+            states[i] = static_cast<double>(state[i]);
+          }
+        step.force_change = relative_change(before);
+        step.gap_residual = gap_residual(step.worst_pair);
+        if (step.force_change <= p.force_tolerance && step.gap_residual <= p.gap_tolerance)
+          {
+            step.converged = true;
+            return;
+          }
+        // The active set from these states, once per new set of states.
+        if (states == tried_states || step.iterations + active_set_polish > p.max_iterations)
+          continue;
+        tried_states = states;
+        pgs_force    = force;
+        pgs_w        = w;
+        pgs_damage   = damaged;
+        if (active_set_iteration(step, active_set_polish))
+          return;
+        force   = pgs_force;
+        w       = pgs_w;
+        damaged = pgs_damage;
+      }
+  }
+
+  ContactStep
+  MixedJointSolver::solve(const Vector &r, const std::vector<double> &w_base, Vector &x)
+  {
+    const unsigned int m = dim * pairs.size();
+    if (rhs.size() != r.size())
+      {
+        rhs.reinit(r);
+        correction.reinit(r);
+      }
+    if (C.empty() && m > 0)
+      {
+        // C is built once, with the first right-hand side's layout
+        // (multi-column solves, 64 columns at a time).
+        const auto start = std::chrono::steady_clock::now();
+        C = flexibility_matrix(pairs, A_factor, r, 64, p.coupling == "neighbouring joints");
+        build_time =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        augmentation = augmentation_of(C, h);
+      }
+
+    // 1. predictor: the pair forces held at their committed values.
+    rhs = r;
+    pairs.add_transpose(force_committed, -1., rhs);
+    A_factor.solve(x, rhs);
+    pairs.relative_displacement(x, w);
+    for (unsigned int j = 0; j < m; ++j)
+      w[j] = w_base[j] + h * w[j];
+    force = force_committed;
+
+    // 2. the contact problem on the pairs: w = s - h C f with s = w + h C f_n
+    //    the relative displacement at zero pair forces.
+    s = w;
+    for (unsigned int j = 0; j < m; ++j)
+      if (force_committed[j] != 0.)
+        for (unsigned int k = 0; k < m; ++k)
+          s[k] += h * C[static_cast<std::size_t>(j) * m + k] * force_committed[j];
+    start_directions();
+
+    // The active-set iteration first (exact and fast when the states settle);
+    // if it does not, projected Gauss-Seidel from the committed forces, which
+    // converges, with the active set tried again on the states it reaches.
+    ContactStep                  step;
+    const std::vector<bool>      damage_at_start = damaged;
+    const std::vector<PairState> states_at_start = state;
+    if (!active_set_iteration(step, std::min(p.max_iterations, active_set_limit)))
+      {
+        damaged = damage_at_start;
+        state   = states_at_start;
+        projected_gauss_seidel(step);
+      }
+
+    // 3. corrector: x += A^{-1} (-B^T (f - f_n)).
+    std::vector<double> df(m);
+    bool                changed = false;
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        df[j]   = force[j] - force_committed[j];
+        changed = changed || df[j] != 0.;
+      }
+    if (changed)
+      {
+        rhs = 0.;
+        pairs.add_transpose(df, -1., rhs);
+        A_factor.solve(correction, rhs);
+        x += correction;
+      }
+    return step;
+  }
+} // namespace archdam::joints

@@ -1,0 +1,178 @@
+#include <archdam/joints/joint_solver.h>
+
+#include <cmath>
+
+namespace archdam::joints
+{
+  using namespace dealii;
+
+  namespace
+  {
+    void
+    check(const PetscErrorCode ierr)
+    {
+      AssertThrow(ierr == 0, ExcPETScError(ierr));
+    }
+
+    /// Row k of B for pair i as (DOF, value) over its free DOFs.
+    std::vector<std::pair<types::global_dof_index, double>>
+    row_of_B(const NodePair &pair, const unsigned int k)
+    {
+      std::vector<std::pair<types::global_dof_index, double>> row;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          if (pair.free_2[c])
+            row.emplace_back(pair.dofs_2[c], pair.frame[k][c]);
+          if (pair.free_1[c])
+            row.emplace_back(pair.dofs_1[c], -pair.frame[k][c]);
+        }
+      return row;
+    }
+  } // namespace
+
+  MonolithicJointSolver::MonolithicJointSolver(const JointParameters &p, const NodePairs &pairs,
+                                               const double h, const SparseMatrix &A,
+                                               const time::FactorizedOperator &A_factor)
+    : JointSolver(p, pairs, h)
+    , A(A)
+    , A_factor(A_factor)
+  {
+    // kappa h = Penalty factor x the largest diagonal entry of A.
+    Vector diagonal;
+    diagonal.reinit(A.locally_owned_range_indices(), A.get_mpi_communicator());
+    check(MatGetDiagonal(static_cast<Mat>(A), static_cast<const Vec &>(diagonal)));
+    kappa = p.penalty_factor * diagonal.linfty_norm() / h;
+
+    // A with zero entries coupling the two sides of every pair, once.
+    check(MatDuplicate(static_cast<Mat>(A), MAT_COPY_VALUES, &pattern));
+    check(MatSetOption(pattern, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+    const IndexSet owned = A.locally_owned_range_indices();
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        std::vector<PetscInt> dofs;
+        for (const auto &[d, v] : row_of_B(pairs[i], 0))
+          dofs.push_back(d);
+        for (const auto &[d, v] : row_of_B(pairs[i], 1))
+          dofs.push_back(d);
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        const std::vector<PetscScalar> zeros(dofs.size(), 0.);
+        for (const PetscInt row : dofs)
+          if (owned.is_element(row))
+            check(MatSetValues(pattern, 1, &row, dofs.size(), dofs.data(), zeros.data(),
+                               ADD_VALUES));
+      }
+    check(MatAssemblyBegin(pattern, MAT_FINAL_ASSEMBLY));
+    check(MatAssemblyEnd(pattern, MAT_FINAL_ASSEMBLY));
+  }
+
+  MonolithicJointSolver::~MonolithicJointSolver()
+  {
+    if (pattern != nullptr)
+      MatDestroy(&pattern);
+  }
+
+  ContactStep
+  MonolithicJointSolver::solve(const Vector &r, const std::vector<double> &w_base, Vector &x)
+  {
+    const IndexSet owned = A.locally_owned_range_indices();
+    const unsigned int n = pairs.size();
+    if (augmentation.empty())
+      augmentation = augmentation_of(flexibility_matrix(pairs, A_factor, r, 64, false), h);
+    start_directions();
+    force = force_committed;
+    Vector rhs;
+    rhs.reinit(r);
+
+    ContactStep         step;
+    std::vector<double> before;
+    while (step.iterations < p.max_iterations)
+      {
+        ++step.iterations;
+        before = force;
+        // The penalized system for the current states:
+        //   (A + kappa h sum b b^T) x = r - kappa sum (w_base - w*) b - B^T f_slip.
+        Mat matrix;
+        check(MatDuplicate(pattern, MAT_COPY_VALUES, &matrix));
+        rhs = r;
+        std::vector<types::global_dof_index> rhs_index;
+        std::vector<double>                  rhs_value;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            if (state[i] == PairState::separation)
+              continue;
+            const unsigned int n_constrained = state[i] == PairState::stick ? dim : 1;
+            for (unsigned int k = 0; k < n_constrained; ++k)
+              {
+                const double target =
+                  k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k];
+                const auto b = row_of_B(pairs[i], k);
+                for (const auto &[row, v_row] : b)
+                  if (owned.is_element(row))
+                    {
+                      for (const auto &[col, v_col] : b)
+                        {
+                          const PetscInt    ir = row, ic = col;
+                          const PetscScalar value = kappa * h * v_row * v_col;
+                          check(MatSetValues(matrix, 1, &ir, 1, &ic, &value, ADD_VALUES));
+                        }
+                      rhs_index.push_back(row);
+                      rhs_value.push_back(-kappa * (w_base[dim * i + k] - target) * v_row);
+                    }
+              }
+            if (state[i] == PairState::slip)
+              {
+                const double tau = strength(i).shear_capacity(force[dim * i]);
+                for (const unsigned int k : {1u, 2u})
+                  for (const auto &[row, v_row] : row_of_B(pairs[i], k))
+                    if (owned.is_element(row))
+                      {
+                        rhs_index.push_back(row);
+                        rhs_value.push_back(-tau * direction[i][k] * v_row);
+                      }
+              }
+          }
+        check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY));
+        check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY));
+        rhs.add(rhs_index, rhs_value);
+        rhs.compress(VectorOperation::add);
+        {
+          time::FactorizedOperator factor;
+          factor.factorize(matrix, true);
+          check(MatDestroy(&matrix)); // the factorization keeps its own reference
+          factor.solve(x, rhs);
+        }
+
+        // Forces from the springs and the friction loads; new states.
+        pairs.relative_displacement(x, w);
+        for (unsigned int j = 0; j < dim * n; ++j)
+          w[j] = w_base[j] + h * w[j];
+        bool states_changed = false;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            double *f = &force[dim * i];
+            if (state[i] == PairState::separation)
+              std::fill(f, f + dim, 0.);
+            else
+              {
+                f[0] = kappa * (w[dim * i] + laws[i].initial_gap);
+                if (state[i] == PairState::stick)
+                  for (const unsigned int k : {1u, 2u})
+                    f[k] = kappa * (w[dim * i + k] - w_committed[dim * i + k]);
+                else
+                  for (const unsigned int k : {1u, 2u})
+                    f[k] = strength(i).shear_capacity(f[0]) * direction[i][k];
+              }
+            states_changed = update_state(i) || states_changed;
+          }
+        step.force_change = relative_change(before);
+        step.gap_residual = gap_residual(step.worst_pair);
+        if (!states_changed && step.iterations > 1 && step.force_change <= p.force_tolerance)
+          {
+            step.converged = true;
+            break;
+          }
+      }
+    return step;
+  }
+} // namespace archdam::joints

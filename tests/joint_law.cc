@@ -1,0 +1,219 @@
+// The contact law on one joint: tension cut-off, residual strength, an
+// initial gap that closes, and an oblique load slipping in its direction
+// (verification.md, joints; numerics.md §3): a 1 m cube (block 1, m = 2400
+// kg) on a fixed base block (block 0) across one horizontal joint (mu = 0.5,
+// c = sigma_t = 1e4 Pa, residual values 0), loaded by a
+// uniform vertical body force F(t) (no gravity), mixed method with Kbar
+// (Beta1 = 0.6 damps the block's own vibration, whose period is far below
+// dt). The block is stiff (E = 1e11 Pa), so the joint force follows the load
+// while the joint is closed: sum f_xi = F (quasi-static, the ramps take 20
+// steps). References written here:
+//  1. F = 0.3 sigma_t A: the intact joint holds, sum f_xi = F (tolerance 2 %
+//     for the damped vibration after the ramp);
+//  2. F ramped to 1.2 sigma_t A: the joint opens when F reaches sigma_t A; no
+//     pair ever carries more than sigma_t A_i (1e-6 for the tolerances);
+//  3. F = -1.2 sigma_t A pushes the block back: the joint closes again
+//     (the block bounces: the impact is nearly elastic);
+//  4. then F = 0.3 sigma_t A again: with the residual strength 0 no pair
+//     carries tension any more (the intact joint carried 0.3 sigma_t in 1.).
+//  5. An initial gap delta_0 = 1 mm under a downward acceleration a = 1 m/s^2
+//     closes at t = sqrt(2 delta_0 / a) (Newmark is exact for a constant
+//     acceleration: the step that contains it), and the block
+//     never penetrates (gap >= -Gap tolerance).
+//  6. Oblique slip: under its weight W (mu = 0.5, c = 0) the block gets a
+//     horizontal load 0.8 W at 30 degrees from x: it slides along the load
+//     (isotropic friction) with acceleration (0.8 - 0.5) g, slip 0.3 g t^2 / 2
+//     after t = 0.1 s (tolerance 2 %: the load jump is averaged over the
+//     first step, a lag of dt / 2, relative 2 (dt / 2) / t = 1 %); the slip
+//     direction within 0.1 degree.
+
+#include <archdam/time/newmark.h>
+
+#include "archdam_tests.h"
+#include "joint_tests.h"
+
+using namespace dealii;
+using namespace archdam;
+
+namespace
+{
+  struct Run
+  {
+    testing::BlockModel               m{2, 2, Point<dim>(1., 1., 2.), 1, 1, 1e11, 0.2, 2400., {0}};
+    archdam::Vector                   iota_x, iota_y, iota_z;
+    time::NewmarkState                s;
+    std::unique_ptr<time::NewmarkIntegrator> newmark;
+    std::unique_ptr<joints::JointSolver>     solver;
+    double                            t = 0.;
+    bool                              converged = true;
+
+    Run(const joints::JointParameters &jp, const double dt)
+    {
+      for (const unsigned int d : {0u, 1u, 2u})
+        physics::solid::assemble_inertia_load(*m.space, m.materials,
+                                              physics::solid::InertiaOf::dam,
+                                              Point<dim>::unit_vector(d),
+                                              d == 0 ? iota_x : d == 1 ? iota_y : iota_z);
+      time::NewmarkParameters np;
+      np.time_step = dt;
+      np.beta1     = 0.6;
+      np.beta2     = 0.3025;
+      newmark = std::make_unique<time::NewmarkIntegrator>(np, m.M, m.K, std::pair<double, double>{0., 0.},
+                                                          m.space->constraints);
+      solver  = joints::make_joint_solver(jp, *m.pairs, newmark->displacement_factor(),
+                                         newmark->effective(), newmark->effective_factor());
+      m.space->reinit(s.u);
+      m.space->reinit(s.v);
+      m.space->reinit(s.a);
+    }
+
+    /// One step with the body force (Fx, Fy, F) [N] on the block (acceleration / m).
+    void
+    step(const double F, const double Fx = 0., const double Fy = 0.)
+    {
+      archdam::Vector load(iota_z);
+      load *= F / 2400.;
+      load.add(Fx / 2400., iota_x, Fy / 2400., iota_y);
+      const auto st = joints::advance_with_contact(*newmark, *solver, load, s);
+      converged     = converged && st.converged;
+      t += newmark->time_step();
+    }
+
+    bool
+    all(const joints::PairState state) const
+    {
+      for (const auto st : solver->state)
+        if (st != state)
+          return false;
+      return true;
+    }
+
+    /// Mean relative displacement w of the pairs in global coordinates.
+    Tensor<1, dim>
+    mean_w() const
+    {
+      Tensor<1, dim> sum;
+      for (unsigned int i = 0; i < m.pairs->size(); ++i)
+        for (unsigned int k = 0; k < dim; ++k)
+          for (unsigned int c = 0; c < dim; ++c)
+            sum[c] += solver->w[dim * i + k] * (*m.pairs)[i].frame[k][c];
+      return sum / m.pairs->size();
+    }
+
+    double
+    min_gap() const
+    {
+      double g = 1e300;
+      for (unsigned int i = 0; i < m.pairs->size(); ++i)
+        g = std::min(g, solver->gap(i));
+      return g;
+    }
+  };
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  auto                            &log = testing::log();
+  const double                     dt = 1e-3, sigma_t = 1e4, A = 1.;
+
+  {
+    joints::JointParameters jp;
+    jp.model                    = "frictional contact";
+    jp.law.friction_coefficient = 0.5;
+    jp.law.tensile_strength     = sigma_t;
+    jp.law.cohesion             = sigma_t; // shear capacity c - mu f_xi > 0 up to sigma_t
+    Run          r(jp, dt);
+    const double F1 = 0.3 * sigma_t * A, F2 = 1.2 * sigma_t * A;
+    double       largest_pair_tension = 0., F_at_opening = 0.;
+    const auto   watch = [&](const double F) {
+      r.step(F);
+      for (unsigned int i = 0; i < r.m.pairs->size(); ++i)
+        largest_pair_tension =
+          std::max(largest_pair_tension, r.solver->force[dim * i] / (sigma_t * (*r.m.pairs)[i].area));
+      if (F_at_opening == 0. && r.all(joints::PairState::separation))
+        F_at_opening = F;
+    };
+    for (unsigned int k = 1; k <= 50; ++k)
+      watch(F1 * std::min(1., k / 20.));
+    log << "1. intact joint under 0.3 sigma_t A:" << std::endl;
+    log << "  all pairs stick: " << (r.all(joints::PairState::stick) ? "yes" : "NO") << std::endl;
+    testing::check_relative("  joint tension [N]", testing::total_normal_force(*r.solver), F1, 0.02);
+    for (unsigned int k = 1; k <= 30; ++k)
+      watch(F1 + (F2 - F1) * std::min(1., k / 20.));
+    log << "2. ramp to 1.2 sigma_t A:" << std::endl;
+    testing::check_relative("  load when the joint opens [N] (sigma_t A, one ramp step 4.5 %)",
+                            F_at_opening, sigma_t * A, 0.05);
+    testing::check_below("  largest pair tension / (sigma_t A_i) - 1", largest_pair_tension - 1.,
+                         1e-6);
+    // 3./4. back into contact and pulled again: every pair has opened, so
+    // with the residual tensile strength 0 no pair may carry tension now.
+    double most_compressed = 0., largest_residual_tension = 0.;
+    const auto watch_damaged = [&](const double F) {
+      r.step(F);
+      for (unsigned int i = 0; i < r.m.pairs->size(); ++i)
+        {
+          const double f = r.solver->force[dim * i] / (sigma_t * (*r.m.pairs)[i].area);
+          most_compressed          = std::min(most_compressed, f);
+          largest_residual_tension = std::max(largest_residual_tension, f);
+        }
+    };
+    for (unsigned int k = 1; k <= 120; ++k)
+      watch_damaged(-F2);
+    for (unsigned int k = 1; k <= 50; ++k)
+      watch_damaged(F1 * std::min(1., k / 20.));
+    log << "3./4. pushed back by -1.2 sigma_t A, then 0.3 sigma_t A (residual strength 0):"
+        << std::endl;
+    log << "  the joint closed again (a pair in compression): "
+        << (most_compressed < -0.01 ? "yes" : "NO") << std::endl;
+    testing::check_below("  largest pair tension / (sigma_t A_i) after opening",
+                         largest_residual_tension, 1e-6);
+    log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO") << std::endl;
+  }
+
+  {
+    joints::JointParameters jp;
+    jp.model                    = "frictional contact";
+    jp.law.friction_coefficient = 0.5;
+    jp.law.initial_gap          = 1e-3;
+    Run          r(jp, dt);
+    const double a = 1., m = 2400.;
+    double       t_close = 0., lowest = 1e300;
+    r.s.a = r.m.uniform_field(1, 2, -a); // the load acts from t = 0
+    for (unsigned int k = 1; k <= 100; ++k)
+      {
+        r.step(-m * a);
+        lowest = std::min(lowest, r.min_gap());
+        if (t_close == 0. && !r.all(joints::PairState::separation))
+          t_close = r.t;
+      }
+    log << "5. initial gap 1 mm under 1 m/s^2:" << std::endl;
+    const double t_ref = std::sqrt(2e-3 / a);
+    log << "  closes in the step containing sqrt(2 delta_0 / a): "
+        << (t_close >= t_ref && t_close - dt < t_ref ? "yes" : "NO") << std::endl;
+    log << "  no penetration: " << (lowest >= -1e-9 ? "yes" : "NO") << std::endl;
+    log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO") << std::endl;
+  }
+
+  {
+    joints::JointParameters jp;
+    jp.model                    = "frictional contact";
+    jp.law.friction_coefficient = 0.5;
+    Run          r(jp, dt);
+    const double g = 9.81, W = 2400. * g, theta = M_PI / 6, T = 0.1;
+    for (unsigned int k = 1; k <= 50; ++k)
+      r.step(-W);
+    const Tensor<1, dim> w0 = r.mean_w();
+    for (unsigned int k = 1; k <= std::lround(T / dt); ++k)
+      r.step(-W, 0.8 * W * std::cos(theta), 0.8 * W * std::sin(theta));
+    const Tensor<1, dim> slip = r.mean_w() - w0;
+    log << "6. oblique load 0.8 W at 30 degrees, mu = 0.5:" << std::endl;
+    testing::check_relative("  slip [m] (0.3 g t^2 / 2)", std::hypot(slip[0], slip[1]),
+                            0.3 * g * T * T / 2, 0.02);
+    testing::check_below("  |slip direction - load direction| [degree]",
+                         std::abs(std::atan2(slip[1], slip[0]) - theta) * 180 / M_PI, 0.1);
+    log << "  all pairs slip, contact problem converged every step: "
+        << (r.all(joints::PairState::slip) && r.converged ? "yes" : "NO") << std::endl;
+  }
+}

@@ -1,0 +1,99 @@
+// Small models for the joint tests: cantilever blocks made of box cells along
+// one axis, split into contraction joints by the splitter, with the FE space,
+// M, K and the node pairs ready (numerics.md §3).
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/geometry/splitter.h>
+#include <archdam/joints/joint_solver.h>
+#include <archdam/physics/solid/solid_operators.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <memory>
+
+namespace archdam::testing
+{
+  /**
+   * Blocks 0 ... n-1 of equal length along @p axis inside the box [0, size],
+   * @p cells cells per block along the axis and one across; every face of a
+   * block in @p fixed_blocks gets boundary id 1, and id 1 together with
+   * @p fixed_ids are fixed. Material: E, nu, rho for every block.
+   */
+  struct BlockModel
+  {
+    dealii::parallel::shared::Triangulation<dim> tria{MPI_COMM_WORLD};
+    std::unique_ptr<fe::FESpace>                 space;
+    physics::solid::MaterialParameters           materials;
+    SparseMatrix                                 M, K;
+    std::unique_ptr<joints::NodePairs>           pairs;
+
+    BlockModel(const unsigned int n_blocks, const unsigned int axis,
+               const dealii::Point<dim> &size, const unsigned int cells,
+               const unsigned int degree, const double E, const double nu, const double rho,
+               const std::set<unsigned int>               &fixed_blocks = {},
+               const std::set<dealii::types::boundary_id> &fixed_ids    = {})
+    {
+      dealii::Triangulation<dim> conforming;
+      std::vector<unsigned int>  repetitions(dim, 1);
+      repetitions[axis] = n_blocks * cells;
+      dealii::GridGenerator::subdivided_hyper_rectangle(conforming, repetitions,
+                                                        dealii::Point<dim>(), size);
+      for (const auto &cell : conforming.active_cell_iterators())
+        {
+          const unsigned int k =
+            static_cast<unsigned int>(cell->center()[axis] / size[axis] * n_blocks);
+          cell->set_material_id(10 + k);
+          if (fixed_blocks.count(k))
+            for (const unsigned int f : cell->face_indices())
+              if (cell->face(f)->at_boundary())
+                cell->face(f)->set_boundary_id(1);
+        }
+      geometry::split_interfaces(conforming, tria);
+
+      fe::FiniteElementParameters fep;
+      fep.degree = degree;
+      space      = std::make_unique<fe::FESpace>(tria, fep);
+      std::set<dealii::types::boundary_id> fixed = fixed_ids;
+      fixed.insert(1);
+      space->setup(fixed);
+      materials.concrete = {E, nu, rho};
+      physics::solid::assemble_mass_and_stiffness(*space, materials,
+                                                  physics::solid::InertiaOf::dam, M, K);
+      pairs = std::make_unique<joints::NodePairs>(*space, joints::pair_joint_faces(tria));
+    }
+
+    /// A vector of the model, with @p value in direction @p d on the cells
+    /// of block @p block (all blocks if block < 0).
+    Vector
+    uniform_field(const int block, const unsigned int d, const double value) const
+    {
+      Vector v;
+      space->reinit(v);
+      std::vector<dealii::types::global_dof_index> dofs;
+      for (const auto &cell : space->dof_handler.active_cell_iterators())
+        if (block < 0 || cell->material_id() == 10 + block)
+          {
+            dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (cell->get_fe().system_to_component_index(i).first == d &&
+                  space->locally_owned.is_element(dofs[i]) &&
+                  !space->constraints.is_constrained(dofs[i]))
+                v(dofs[i]) = value;
+          }
+      v.compress(dealii::VectorOperation::insert);
+      return v;
+    }
+  };
+
+  /// Sum of the normal forces over all pairs (compression negative).
+  inline double
+  total_normal_force(const joints::JointSolver &s)
+  {
+    double sum = 0.;
+    for (unsigned int i = 0; i < s.pairs.size(); ++i)
+      sum += s.force[dim * i];
+    return sum;
+  }
+} // namespace archdam::testing
