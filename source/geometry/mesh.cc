@@ -5,7 +5,7 @@
 #include <archdam/geometry/mesh_checks.h>
 #include <archdam/geometry/splitter.h>
 
-#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <filesystem>
 #include <set>
@@ -42,14 +42,26 @@ namespace archdam::geometry
   void
   remove_water(Triangulation<dim> &mesh)
   {
-    std::set<Triangulation<dim>::active_cell_iterator> water;
+    // The solid cells on the mesh's own vertices: the joints' duplicated
+    // vertices stay apart (GridGenerator::create_triangulation_with_removed_cells
+    // would merge them and glue the joints shut).
+    std::vector<Point<dim>>    vertices = mesh.get_vertices();
+    std::vector<CellData<dim>> cells;
     for (const auto &cell : mesh.active_cell_iterators())
-      if (cell->material_id() == ids::water)
-        water.insert(cell);
-    if (water.empty())
+      if (cell->material_id() != ids::water)
+        {
+          CellData<dim> data;
+          for (const unsigned int v : cell->vertex_indices())
+            data.vertices[v] = cell->vertex_index(v);
+          data.material_id = cell->material_id();
+          cells.push_back(data);
+        }
+    if (cells.size() == mesh.n_active_cells())
       return;
+    SubCellData no_boundary_data;
+    GridTools::delete_unused_vertices(vertices, cells, no_boundary_data);
     Triangulation<dim> solid;
-    GridGenerator::create_triangulation_with_removed_cells(mesh, water, solid);
+    solid.create_triangulation(vertices, cells, no_boundary_data);
     // The remaining cells keep their order: copy the boundary ids across.
     auto old_cell = mesh.begin_active();
     for (const auto &cell : solid.active_cell_iterators())
