@@ -139,9 +139,20 @@ namespace archdam::joints
     for (unsigned int i = 0; i < pairs.size(); ++i)
       if (state[i] != PairState::separation)
         closed.push_back(i);
-    const unsigned int       n = dim * closed.size();
-    LAPACKFullMatrix<double> L(n, n);
-    dealii::Vector<double>   f(n);
+    const unsigned int     n = dim * closed.size();
+    dealii::Vector<double> f(n);
+    // The matrix depends only on the states and the slip directions: its LU
+    // is kept and reused while they stay the same (most steps of a dynamic
+    // run, once the joints have settled).
+    const bool same = factorized && state == factor_states &&
+                      [&] {
+                        for (unsigned int i = 0; i < pairs.size(); ++i)
+                          if (state[i] == PairState::slip && direction[i] != factor_directions[i])
+                            return false;
+                        return true;
+                      }();
+    if (!same)
+      factor.reinit(n, n);
     for (unsigned int a = 0; a < closed.size(); ++a)
       {
         const unsigned int i = closed[a];
@@ -152,23 +163,33 @@ namespace archdam::joints
               {
                 // f_k - (c A - mu f_xi) d_k = 0
                 const auto strength_i = strength(i);
-                L(row, row)           = 1.;
-                L(row, dim * a)       = strength_i.friction * direction[i][k];
-                f(row)                = strength_i.cohesion_force * direction[i][k];
+                if (!same)
+                  {
+                    factor(row, row)     = 1.;
+                    factor(row, dim * a) = strength_i.friction * direction[i][k];
+                  }
+                f(row) = strength_i.cohesion_force * direction[i][k];
                 continue;
               }
             // (h C f)_ik = s_ik - w_target,k
-            for (unsigned int b = 0; b < closed.size(); ++b)
-              for (unsigned int l = 0; l < dim; ++l)
-                L(row, dim * b + l) =
-                  h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+            if (!same)
+              for (unsigned int b = 0; b < closed.size(); ++b)
+                for (unsigned int l = 0; l < dim; ++l)
+                  factor(row, dim * b + l) =
+                    h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
             f(row) = s[dim * i + k] - (k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k]);
           }
       }
     if (n > 0)
       {
-        L.compute_lu_factorization();
-        L.solve(f);
+        if (!same)
+          {
+            factor.compute_lu_factorization();
+            factorized        = true;
+            factor_states     = state;
+            factor_directions = direction;
+          }
+        factor.solve(f);
       }
     std::fill(force.begin(), force.end(), 0.);
     for (unsigned int a = 0; a < closed.size(); ++a)

@@ -6,6 +6,8 @@
 #include <archdam/time/factorized_operator.h>
 #include <archdam/time/newmark.h>
 
+#include <deal.II/lac/lapack_full_matrix.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -174,6 +176,12 @@ namespace archdam::joints
     std::vector<double>             C;
     /// Relative displacement of the pairs at zero pair forces.
     std::vector<double> s;
+    /// LU of the last fixed-state system and the states and slip directions
+    /// it was built for.
+    dealii::LAPACKFullMatrix<double>     factor;
+    bool                                 factorized = false;
+    std::vector<PairState>               factor_states;
+    std::vector<dealii::Tensor<1, dim>>  factor_directions;
     Vector              rhs, correction;
   };
 
