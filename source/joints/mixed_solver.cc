@@ -240,8 +240,9 @@ namespace archdam::joints
       for (unsigned int k = 0; k < m; ++k)
         w[k] -= h * column[k] * df;
     };
-    std::vector<double> before, tried_states, pgs_force, pgs_w;
+    std::vector<double> before, previous_states, tried_states, pgs_force, pgs_w;
     std::vector<bool>   pgs_damage;
+    unsigned int        unchanged = 0; // sweeps in a row with the same states
     while (step.iterations < p.max_iterations)
       {
         ++step.iterations;
@@ -314,8 +315,12 @@ namespace archdam::joints
             step.converged = true;
             return;
           }
-        // The active set from these states, once per new set of states.
-        if (states == tried_states || step.iterations + active_set_polish > p.max_iterations)
+        // The active set from these states: once they have held for a few
+        // sweeps (an LU per try), and once per set of states.
+        unchanged       = states == previous_states ? unchanged + 1 : 0;
+        previous_states = states;
+        if (unchanged < polish_after || states == tried_states ||
+            step.iterations + active_set_polish > p.max_iterations)
           continue;
         tried_states = states;
         pgs_force    = force;

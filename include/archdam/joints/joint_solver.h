@@ -154,8 +154,10 @@ namespace archdam::joints
 
   private:
     /// Active-set iterations before projected Gauss-Seidel takes over, and
-    /// allowed for each try of the states Gauss-Seidel reaches.
-    static constexpr unsigned int active_set_limit = 30, active_set_polish = 10;
+    /// allowed for each try of the states Gauss-Seidel reaches once they have
+    /// held for polish_after sweeps.
+    static constexpr unsigned int active_set_limit = 30, active_set_polish = 10,
+                                  polish_after = 5;
 
     /// w = s - h C f.
     void
