@@ -18,8 +18,13 @@
 //    1e-6 of the largest pair force); the joints open; the joint outputs:
 //    the PVD series lists one VTU per field output and every file exists,
 //    the joint history has one row per step plus the start.
+// 3. A step whose contact problem does not converge (Maximum iterations = 2):
+//    with On non-convergence = stop the run ends with a message naming the
+//    time, the joint, the node pair's position and the residual; with
+//    continue it reaches the end and counts the flagged steps in the summary.
 
 #include <archdam/analysis/simulation.h>
+#include <archdam/base/input_error.h>
 
 #include "archdam_tests.h"
 
@@ -211,4 +216,47 @@ main(int argc, char **argv)
       log << "  joints_dynamic.pvd datasets: " << n << " (t = 0, 0.1, ..., 0.5), files present: "
           << present << std::endl;
     }
+
+  // 3. a step that does not converge
+  const std::string few = law + "\n  set Maximum iterations = 2";
+  std::string       message;
+  try
+    {
+      const Parameters     q = parameters_from_string(model(few, "stop", "dynamic"));
+      analysis::Simulation stopped(q, MPI_COMM_WORLD, quiet);
+      stopped.run();
+    }
+  catch (const InputError &e)
+    {
+      message = e.what();
+    }
+  const auto has = [&](const std::string &s) { return message.find(s) != std::string::npos; };
+  log << "non-convergence, stop: a message naming the time, joint, pair position and residual: "
+      << (has("t = ") && has("joint ") && has("node pair at (") && has("law residual") &&
+              has("did not converge") ?
+            "yes" :
+            "NO")
+      << std::endl;
+  {
+    const Parameters q = parameters_from_string(
+      model(few + "\n  set On non-convergence = continue", "flagged", "dynamic"));
+    analysis::Simulation flagged(q, MPI_COMM_WORLD, quiet);
+    flagged.run();
+    unsigned int count = 0;
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ifstream     in("flagged/summary.json");
+        std::stringstream text;
+        text << in.rdbuf();
+        std::smatch m;
+        const std::string s = text.str();
+        if (std::regex_search(s, m, std::regex("\"steps not converged\": *\"?([0-9]+)")))
+          count = std::stoi(m[1]);
+      }
+    log << "non-convergence, continue: reaches the end time: "
+        << (std::abs(flagged.state().time - 0.5) < 1e-9 ? "yes" : "NO")
+        << ", flagged steps counted in summary.json: "
+        << (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0 || count > 0 ? "yes" : "NO")
+        << std::endl;
+  }
 }
