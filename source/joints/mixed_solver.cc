@@ -1,3 +1,4 @@
+#include <archdam/base/petsc_check.h>
 #include <archdam/joints/joint_solver.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -12,26 +13,7 @@ namespace archdam::joints
 
   namespace
   {
-    void
-    check(const PetscErrorCode ierr)
-    {
-      AssertThrow(ierr == 0, ExcPETScError(ierr));
-    }
 
-    /// Entries of row k of B for pair i: (global DOF, value) over free DOFs;
-    /// w_k = sum value * u[DOF] (side 2 minus side 1, projected on frame k).
-    template <typename F>
-    void
-    for_row_of_B(const NodePair &pair, const unsigned int k, F &&action)
-    {
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          if (pair.free_2[c])
-            action(pair.dofs_2[c], pair.frame[k][c]);
-          if (pair.free_1[c])
-            action(pair.dofs_1[c], -pair.frame[k][c]);
-        }
-    }
   } // namespace
 
   std::vector<double>
@@ -53,36 +35,36 @@ namespace archdam::joints
         const unsigned int nb = std::min(block_size, m - start);
         // Right-hand sides B^T e_j, j = start ... start + nb - 1.
         Mat rhs, solution;
-        check(MatCreateDense(comm, n_local, PETSC_DECIDE, layout.size(), nb, nullptr, &rhs));
+        petsc_check(MatCreateDense(comm, n_local, PETSC_DECIDE, layout.size(), nb, nullptr, &rhs));
         PetscScalar *a;
-        check(MatDenseGetArray(rhs, &a));
+        petsc_check(MatDenseGetArray(rhs, &a));
         std::fill(a, a + n_local * nb, 0.);
         for (unsigned int j = 0; j < nb; ++j)
-          for_row_of_B(pairs[(start + j) / dim], (start + j) % dim,
+          pairs[(start + j) / dim].for_each_B_entry((start + j) % dim,
                        [&](const types::global_dof_index d, const double v) {
                          if (is_owned(d))
                            a[j * n_local + (d - range.first)] += v;
                        });
-        check(MatDenseRestoreArray(rhs, &a));
-        check(MatAssemblyBegin(rhs, MAT_FINAL_ASSEMBLY));
-        check(MatAssemblyEnd(rhs, MAT_FINAL_ASSEMBLY));
-        check(MatDuplicate(rhs, MAT_DO_NOT_COPY_VALUES, &solution));
+        petsc_check(MatDenseRestoreArray(rhs, &a));
+        petsc_check(MatAssemblyBegin(rhs, MAT_FINAL_ASSEMBLY));
+        petsc_check(MatAssemblyEnd(rhs, MAT_FINAL_ASSEMBLY));
+        petsc_check(MatDuplicate(rhs, MAT_DO_NOT_COPY_VALUES, &solution));
         A_factor.solve(solution, rhs);
 
         // Columns of C: B A^{-1} B^T e_j, the owners' parts summed over ranks.
         std::vector<double> block(static_cast<std::size_t>(m) * nb, 0.);
         const PetscScalar  *x;
-        check(MatDenseGetArrayRead(solution, &x));
+        petsc_check(MatDenseGetArrayRead(solution, &x));
         for (unsigned int j = 0; j < nb; ++j)
           for (unsigned int i = 0; i < pairs.size(); ++i)
             for (unsigned int k = 0; k < dim; ++k)
-              for_row_of_B(pairs[i], k, [&](const types::global_dof_index d, const double v) {
+              pairs[i].for_each_B_entry(k, [&](const types::global_dof_index d, const double v) {
                 if (is_owned(d))
                   block[j * m + dim * i + k] += v * x[j * n_local + (d - range.first)];
               });
-        check(MatDenseRestoreArrayRead(solution, &x));
-        check(MatDestroy(&rhs));
-        check(MatDestroy(&solution));
+        petsc_check(MatDenseRestoreArrayRead(solution, &x));
+        petsc_check(MatDestroy(&rhs));
+        petsc_check(MatDestroy(&solution));
         Utilities::MPI::sum(block, comm, block);
         std::copy(block.begin(), block.end(), C.begin() + static_cast<std::size_t>(start) * m);
       }

@@ -1,3 +1,4 @@
+#include <archdam/base/petsc_check.h>
 #include <archdam/joints/joint_solver.h>
 
 #include <cmath>
@@ -8,26 +9,7 @@ namespace archdam::joints
 
   namespace
   {
-    void
-    check(const PetscErrorCode ierr)
-    {
-      AssertThrow(ierr == 0, ExcPETScError(ierr));
-    }
 
-    /// Row k of B for pair i as (DOF, value) over its free DOFs.
-    std::vector<std::pair<types::global_dof_index, double>>
-    row_of_B(const NodePair &pair, const unsigned int k)
-    {
-      std::vector<std::pair<types::global_dof_index, double>> row;
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          if (pair.free_2[c])
-            row.emplace_back(pair.dofs_2[c], pair.frame[k][c]);
-          if (pair.free_1[c])
-            row.emplace_back(pair.dofs_1[c], -pair.frame[k][c]);
-        }
-      return row;
-    }
   } // namespace
 
   MonolithicJointSolver::MonolithicJointSolver(const JointParameters &p, const NodePairs &pairs,
@@ -40,30 +22,30 @@ namespace archdam::joints
     // kappa h = Penalty factor x the largest diagonal entry of A.
     Vector diagonal;
     diagonal.reinit(A.locally_owned_range_indices(), A.get_mpi_communicator());
-    check(MatGetDiagonal(static_cast<Mat>(A), static_cast<const Vec &>(diagonal)));
+    petsc_check(MatGetDiagonal(static_cast<Mat>(A), static_cast<const Vec &>(diagonal)));
     kappa = p.penalty_factor * diagonal.linfty_norm() / h;
 
     // A with zero entries coupling the two sides of every pair, once.
-    check(MatDuplicate(static_cast<Mat>(A), MAT_COPY_VALUES, &pattern));
-    check(MatSetOption(pattern, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
+    petsc_check(MatDuplicate(static_cast<Mat>(A), MAT_COPY_VALUES, &pattern));
+    petsc_check(MatSetOption(pattern, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_FALSE));
     const IndexSet owned = A.locally_owned_range_indices();
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         std::vector<PetscInt> dofs;
-        for (const auto &[d, v] : row_of_B(pairs[i], 0))
+        for (const auto &[d, v] : pairs[i].B_row(0))
           dofs.push_back(d);
-        for (const auto &[d, v] : row_of_B(pairs[i], 1))
+        for (const auto &[d, v] : pairs[i].B_row(1))
           dofs.push_back(d);
         std::sort(dofs.begin(), dofs.end());
         dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
         const std::vector<PetscScalar> zeros(dofs.size(), 0.);
         for (const PetscInt row : dofs)
           if (owned.is_element(row))
-            check(MatSetValues(pattern, 1, &row, dofs.size(), dofs.data(), zeros.data(),
-                               ADD_VALUES));
+            petsc_check(MatSetValues(pattern, 1, &row, dofs.size(), dofs.data(),
+                                     zeros.data(), ADD_VALUES));
       }
-    check(MatAssemblyBegin(pattern, MAT_FINAL_ASSEMBLY));
-    check(MatAssemblyEnd(pattern, MAT_FINAL_ASSEMBLY));
+    petsc_check(MatAssemblyBegin(pattern, MAT_FINAL_ASSEMBLY));
+    petsc_check(MatAssemblyEnd(pattern, MAT_FINAL_ASSEMBLY));
   }
 
   MonolithicJointSolver::~MonolithicJointSolver()
@@ -93,7 +75,7 @@ namespace archdam::joints
         // The penalized system for the current states:
         //   (A + kappa h sum b b^T) x = r - kappa sum (w_base - w*) b - B^T f_slip.
         Mat matrix;
-        check(MatDuplicate(pattern, MAT_COPY_VALUES, &matrix));
+        petsc_check(MatDuplicate(pattern, MAT_COPY_VALUES, &matrix));
         rhs = r;
         std::vector<types::global_dof_index> rhs_index;
         std::vector<double>                  rhs_value;
@@ -106,7 +88,7 @@ namespace archdam::joints
               {
                 const double target =
                   k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k];
-                const auto b = row_of_B(pairs[i], k);
+                const auto b = pairs[i].B_row(k);
                 for (const auto &[row, v_row] : b)
                   if (owned.is_element(row))
                     {
@@ -114,7 +96,7 @@ namespace archdam::joints
                         {
                           const PetscInt    ir = row, ic = col;
                           const PetscScalar value = kappa * h * v_row * v_col;
-                          check(MatSetValues(matrix, 1, &ir, 1, &ic, &value, ADD_VALUES));
+                          petsc_check(MatSetValues(matrix, 1, &ir, 1, &ic, &value, ADD_VALUES));
                         }
                       rhs_index.push_back(row);
                       rhs_value.push_back(-kappa * (w_base[dim * i + k] - target) * v_row);
@@ -124,7 +106,7 @@ namespace archdam::joints
               {
                 const double tau = strength(i).shear_capacity(force[dim * i]);
                 for (const unsigned int k : {1u, 2u})
-                  for (const auto &[row, v_row] : row_of_B(pairs[i], k))
+                  for (const auto &[row, v_row] : pairs[i].B_row(k))
                     if (owned.is_element(row))
                       {
                         rhs_index.push_back(row);
@@ -132,14 +114,14 @@ namespace archdam::joints
                       }
               }
           }
-        check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY));
-        check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY));
+        petsc_check(MatAssemblyBegin(matrix, MAT_FINAL_ASSEMBLY));
+        petsc_check(MatAssemblyEnd(matrix, MAT_FINAL_ASSEMBLY));
         rhs.add(rhs_index, rhs_value);
         rhs.compress(VectorOperation::add);
         {
           time::FactorizedOperator factor;
           factor.factorize(matrix, true);
-          check(MatDestroy(&matrix)); // the factorization keeps its own reference
+          petsc_check(MatDestroy(&matrix)); // the factorization keeps its own reference
           factor.solve(x, rhs);
         }
 

@@ -1,3 +1,4 @@
+#include <archdam/base/petsc_check.h>
 #include <archdam/time/factorized_operator.h>
 
 #include <deal.II/lac/exceptions.h>
@@ -5,15 +6,6 @@
 namespace archdam::time
 {
   using namespace dealii;
-
-  namespace
-  {
-    void
-    check(const PetscErrorCode ierr)
-    {
-      AssertThrow(ierr == 0, ExcPETScError(ierr));
-    }
-  } // namespace
 
   FactorizedOperator::~FactorizedOperator()
   {
@@ -31,33 +23,33 @@ namespace archdam::time
   FactorizedOperator::factorize(Mat mat, const bool positive_definite)
   {
     if (ksp != nullptr)
-      check(KSPDestroy(&ksp));
-    check(MatSetOption(mat, MAT_SYMMETRIC, PETSC_TRUE));
-    check(MatSetOption(mat, MAT_SPD, positive_definite ? PETSC_TRUE : PETSC_FALSE));
+      petsc_check(KSPDestroy(&ksp));
+    petsc_check(MatSetOption(mat, MAT_SYMMETRIC, PETSC_TRUE));
+    petsc_check(MatSetOption(mat, MAT_SPD, positive_definite ? PETSC_TRUE : PETSC_FALSE));
 
     MPI_Comm comm;
-    check(PetscObjectGetComm(reinterpret_cast<PetscObject>(mat), &comm));
-    check(KSPCreate(comm, &ksp));
-    check(KSPSetOperators(ksp, mat, mat));
-    check(KSPSetType(ksp, KSPPREONLY));
+    petsc_check(PetscObjectGetComm(reinterpret_cast<PetscObject>(mat), &comm));
+    petsc_check(KSPCreate(comm, &ksp));
+    petsc_check(KSPSetOperators(ksp, mat, mat));
+    petsc_check(KSPSetType(ksp, KSPPREONLY));
     PC pc;
-    check(KSPGetPC(ksp, &pc));
-    check(PCSetType(pc, PCCHOLESKY));
-    check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
-    check(KSPSetUp(ksp)); // the factorization happens here, once
+    petsc_check(KSPGetPC(ksp, &pc));
+    petsc_check(PCSetType(pc, PCCHOLESKY));
+    petsc_check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+    petsc_check(KSPSetUp(ksp)); // the factorization happens here, once
   }
 
   void
   FactorizedOperator::solve(Vector &x, const Vector &b) const
   {
     Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
-    check(KSPSolve(ksp, b, x));
+    petsc_check(KSPSolve(ksp, b, x));
   }
 
   void
   FactorizedOperator::solve(Mat X, Mat B) const
   {
     Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
-    check(KSPMatSolve(ksp, B, X));
+    petsc_check(KSPMatSolve(ksp, B, X));
   }
 } // namespace archdam::time

@@ -27,6 +27,29 @@ namespace archdam::joints
     std::array<dealii::types::global_dof_index, dim> dofs_1, dofs_2;
     /// false where a DOF is constrained (a fixed support: it does not move).
     std::array<bool, dim>                      free_1, free_2;
+
+    /// Row k of the pair map B: action(DOF, value) for each free DOF, with
+    /// w_k = sum value u[DOF] (side 2 minus side 1, along frame[k]).
+    template <typename Action>
+    void
+    for_each_B_entry(const unsigned int k, Action &&action) const
+    {
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          if (free_2[c])
+            action(dofs_2[c], frame[k][c]);
+          if (free_1[c])
+            action(dofs_1[c], -frame[k][c]);
+        }
+    }
+    /// The same row as a list of (DOF, value).
+    std::vector<std::pair<dealii::types::global_dof_index, double>>
+    B_row(const unsigned int k) const
+    {
+      std::vector<std::pair<dealii::types::global_dof_index, double>> row;
+      for_each_B_entry(k, [&](const auto dof, const double v) { row.emplace_back(dof, v); });
+      return row;
+    }
   };
 
   /**
