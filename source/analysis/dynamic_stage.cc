@@ -1,5 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/run_stopped.h>
+#include <archdam/time/divergence_check.h>
 
 #include <chrono>
 #include <cmath>
@@ -90,6 +92,7 @@ namespace archdam::analysis
     };
     double       last_report = 0.;
     const double report_every = 10.; // seconds of wall time between progress lines
+    const time::DivergenceCheck divergence(*fe_space);
 
     for (unsigned int n = 1; n <= n_steps; ++n)
       {
@@ -108,6 +111,24 @@ namespace archdam::analysis
             check_contact_step(contact, n * dt);
           current.time = n * dt; // no drift from repeated additions
         }
+        try
+          {
+            divergence.check(current, n);
+          }
+        catch (const RunStopped &stop)
+          {
+            // The results up to the last good step stay: the histories end
+            // with it, the summary says why and when the run stopped.
+            history->finish();
+            if (pressure)
+              pressure->finish();
+            summary.set("stopped/reason", stop.what());
+            summary.set("stopped/step", stop.step);
+            summary.set("stopped/time [s]", stop.time);
+            summary.set("stopped/last complete time [s]", (n - 1) * dt);
+            write_summary();
+            throw;
+          }
         {
           TimerOutput::Scope t(timer, "dynamic: monitors");
           history->append(monitor->evaluate(current));

@@ -1,5 +1,6 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/on_rank_zero.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh_report.h>
 #include <archdam/output/mesh_writer.h>
@@ -50,15 +51,13 @@ namespace archdam::analysis
   void
   Simulation::create_output_directory()
   {
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::error_code ec;
-        std::filesystem::create_directories(p.output.directory, ec);
-        if (ec)
-          throw InputError("Output/Directory: cannot create '" + p.output.directory +
-                           "': " + ec.message() + ".");
-      }
-    MPI_Barrier(comm);
+    on_rank_zero(comm, [&] {
+      std::error_code ec;
+      std::filesystem::create_directories(p.output.directory, ec);
+      if (ec)
+        throw InputError("Output/Directory: cannot create '" + p.output.directory +
+                         "': " + ec.message() + ".");
+    });
   }
 
   void
@@ -82,14 +81,12 @@ namespace archdam::analysis
     summary.set("model/cells", model.n_active_cells());
     summary.set("model/mpi processes", Utilities::MPI::n_mpi_processes(comm));
     summary.set("model/element degree", p.finite_element.degree);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        output::write_mesh_vtu(model, p.output.directory + "/mesh");
-        summary.write(p.output.directory + "/summary.json");
-        screen << "Wrote " << p.output.directory << "/mesh.vtu, mesh_boundary.vtu and "
-               << "summary.json" << std::endl;
-      }
-    MPI_Barrier(comm);
+    on_rank_zero(comm, [&] {
+      output::write_mesh_vtu(model, p.output.directory + "/mesh");
+      summary.write(p.output.directory + "/summary.json");
+    });
+    screen << "Wrote " << p.output.directory << "/mesh.vtu, mesh_boundary.vtu and "
+           << "summary.json" << std::endl;
   }
 
   void
@@ -119,6 +116,7 @@ namespace archdam::analysis
     if (p.joints.frictional())
       {
         node_pairs = std::make_unique<joints::NodePairs>(*fe_space, joint_faces);
+        p.joints.check_per_joint(node_pairs->n_joints());
         screen << "Joints: " << node_pairs->n_joints() << " in frictional contact, "
                << node_pairs->size() << " node pairs" << std::endl;
       }
@@ -278,8 +276,7 @@ namespace archdam::analysis
     for (const auto &[stage, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
       summary.set("wall time [s]/" + stage, seconds);
 
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      summary.write(p.output.directory + "/summary.json");
+    on_rank_zero(comm, [&] { summary.write(p.output.directory + "/summary.json"); });
   }
 
   void

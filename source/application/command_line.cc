@@ -1,6 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/application/command_line.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/run_stopped.h>
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -87,6 +88,12 @@ namespace archdam
       {
         if (talk)
           err << "archdam: error: " << e.what() << std::endl;
+        return 1;
+      }
+    catch (const RunStopped &e)
+      {
+        if (talk)
+          err << "archdam: run stopped: " << e.what() << std::endl;
         return 1;
       }
     catch (const ExceptionBase &e)

@@ -1,5 +1,7 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/on_rank_zero.h>
 #include <archdam/joints/joint_output.h>
+#include <archdam/output/atomic_file.h>
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/utilities.h>
@@ -7,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <sstream>
 
 namespace archdam::joints
 {
@@ -53,9 +56,10 @@ namespace archdam::joints
     if (writer)
       {
         csv.open(directory + "/joint_histories_" + stage + ".csv");
+        std::string header;
         for (unsigned int c = 0; c < names.size(); ++c)
-          csv << (c ? "," : "") << names[c];
-        csv << '\n';
+          header += (c ? "," : "") + names[c];
+        output::append_line(csv, header + '\n');
       }
   }
 
@@ -69,13 +73,14 @@ namespace archdam::joints
         row.push_back(joints.slip(i));
       }
     table.push_back(row);
-    if (writer)
-      {
-        csv << std::setprecision(10);
-        for (unsigned int c = 0; c < row.size(); ++c)
-          csv << (c ? "," : "") << row[c];
-        csv << std::endl;
-      }
+    on_rank_zero(pairs.communicator(), [&] {
+      std::ostringstream line;
+      line << std::setprecision(10);
+      for (unsigned int c = 0; c < row.size(); ++c)
+        line << (c ? "," : "") << row[c];
+      line << '\n';
+      output::append_line(csv, line.str());
+    });
     for (unsigned int i = 0; i < pairs.size(); ++i)
       if (joints.gap(i) > peak_opening[i])
         {
@@ -91,7 +96,7 @@ namespace archdam::joints
       return;
     const std::string name =
       "joints_" + stage + "_" + Utilities::int_to_string(pvd_records.size(), 4) + ".vtu";
-    std::ofstream vtu(directory + "/" + name);
+    std::ostringstream vtu;
     const unsigned int n = pairs.size();
     vtu << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
         << "<UnstructuredGrid><Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n
@@ -126,10 +131,12 @@ namespace archdam::joints
     });
     field("state", [&](unsigned int i) { return static_cast<int>(joints.state[i]); });
     vtu << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+    output::write_atomically(directory + "/" + name, [&](std::ostream &f) { f << vtu.str(); });
 
     pvd_records.emplace_back(time, name);
-    std::ofstream pvd(directory + "/joints_" + stage + ".pvd");
-    DataOutBase::write_pvd_record(pvd, pvd_records);
+    output::write_atomically(directory + "/joints_" + stage + ".pvd", [&](std::ostream &pvd) {
+      DataOutBase::write_pvd_record(pvd, pvd_records);
+    });
   }
 
   void
@@ -158,17 +165,20 @@ namespace archdam::joints
       }
     if (writer)
       {
-        std::ofstream env(directory + "/joint_envelopes_" + stage + ".csv");
+        std::ostringstream env, crest;
         env << "joint,z [m],max opening [m]\n" << std::setprecision(10);
         for (const auto &[key, value] : along_height)
           env << key.first << ',' << key.second << ',' << value << '\n';
-        std::ofstream crest(directory + "/joint_crest_" + stage + ".csv");
         crest << "joint,x [m],y [m],z [m],max opening [m],time [s]\n" << std::setprecision(10);
         for (unsigned int j = 0; j < pairs.n_joints(); ++j)
           if (crest_of[j] >= 0)
             crest << j << ',' << pairs[crest_of[j]].position[0] << ','
                   << pairs[crest_of[j]].position[1] << ',' << pairs[crest_of[j]].position[2]
                   << ',' << peak_opening[crest_of[j]] << ',' << peak_time[crest_of[j]] << '\n';
+        for (const auto &[file, text] :
+             {std::pair{"/joint_envelopes_", &env}, {"/joint_crest_", &crest}})
+          output::write_atomically(directory + file + stage + ".csv",
+                                   [&](std::ostream &f) { f << text->str(); });
       }
     for (unsigned int j = 0; j < pairs.n_joints(); ++j)
       if (peak_of[j] >= 0)

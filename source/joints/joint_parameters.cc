@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <map>
+#include <vector>
 
 namespace archdam::joints
 {
@@ -86,59 +87,99 @@ namespace archdam::joints
                       Patterns::Anything());
   }
 
+  namespace
+  {
+    /// One override of `Per joint`: joint k's member of the law.
+    struct Override
+    {
+      unsigned int joint;
+      double JointLaw::*member;
+      double            value;
+    };
+
+    /// Parse "k: Name = value, ...; ..."; throw InputError for a malformed
+    /// entry or a value out of range.
+    std::vector<Override>
+    parse_per_joint(const std::string &per_joint)
+    {
+      const std::map<std::string, double JointLaw::*> names{
+        {"Friction coefficient", &JointLaw::friction_coefficient},
+        {"Cohesion", &JointLaw::cohesion},
+        {"Tensile strength", &JointLaw::tensile_strength},
+        {"Residual cohesion", &JointLaw::residual_cohesion},
+        {"Residual tensile strength", &JointLaw::residual_tensile_strength},
+        {"Initial gap", &JointLaw::initial_gap}};
+      std::vector<Override> result;
+      for (const auto &entry : Utilities::split_string_list(per_joint, ';'))
+        {
+          const auto colon = entry.find(':');
+          const auto bad   = [&](const std::string &why) {
+            return InputError("Contraction joints/Per joint: '" + entry + "': " + why + ".");
+          };
+          if (colon == std::string::npos)
+            throw bad("expected 'k: Name = value, ...'");
+          int joint = 0;
+          try
+            {
+              joint = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
+            }
+          catch (...)
+            {
+              throw bad("the joint number is not an integer");
+            }
+          if (joint < 0)
+            throw bad("the joint number must be 0 or more");
+          for (const auto &assignment :
+               Utilities::split_string_list(entry.substr(colon + 1), ','))
+            {
+              const auto eq = assignment.find('=');
+              if (eq == std::string::npos)
+                throw bad("expected 'Name = value' in '" + assignment + "'");
+              const auto name = Utilities::trim(assignment.substr(0, eq));
+              const auto it   = names.find(name);
+              if (it == names.end())
+                throw bad("unknown name '" + name + "'");
+              double value = 0.;
+              try
+                {
+                  value =
+                    Utilities::string_to_double(Utilities::trim(assignment.substr(eq + 1)));
+                }
+              catch (...)
+                {
+                  throw bad("the value of '" + name + "' is not a number");
+                }
+              if (!(value >= 0.))
+                throw bad("'" + name + "' must be >= 0");
+              result.push_back({static_cast<unsigned int>(joint), it->second, value});
+            }
+        }
+      return result;
+    }
+  } // namespace
+
   JointLaw
   JointParameters::law_of(const unsigned int k) const
   {
     JointLaw result = law;
-    const std::map<std::string, double JointLaw::*> names{
-      {"Friction coefficient", &JointLaw::friction_coefficient},
-      {"Cohesion", &JointLaw::cohesion},
-      {"Tensile strength", &JointLaw::tensile_strength},
-      {"Residual cohesion", &JointLaw::residual_cohesion},
-      {"Residual tensile strength", &JointLaw::residual_tensile_strength},
-      {"Initial gap", &JointLaw::initial_gap}};
-    for (const auto &entry : Utilities::split_string_list(per_joint, ';'))
-      {
-        const auto colon = entry.find(':');
-        const auto bad   = [&](const std::string &why) {
-          return InputError("Contraction joints/Per joint: '" + entry + "': " + why + ".");
-        };
-        if (colon == std::string::npos)
-          throw bad("expected 'k: Name = value, ...'");
-        unsigned int joint = 0;
-        try
-          {
-            joint = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
-          }
-        catch (...)
-          {
-            throw bad("the joint number is not an integer");
-          }
-        for (const auto &assignment :
-             Utilities::split_string_list(entry.substr(colon + 1), ','))
-          {
-            const auto eq = assignment.find('=');
-            if (eq == std::string::npos)
-              throw bad("expected 'Name = value' in '" + assignment + "'");
-            const auto name = Utilities::trim(assignment.substr(0, eq));
-            const auto it   = names.find(name);
-            if (it == names.end())
-              throw bad("unknown name '" + name + "'");
-            double value = 0.;
-            try
-              {
-                value = Utilities::string_to_double(Utilities::trim(assignment.substr(eq + 1)));
-              }
-            catch (...)
-              {
-                throw bad("the value of '" + name + "' is not a number");
-              }
-            if (!(value >= 0.))
-              throw bad("'" + name + "' must be >= 0");
-            if (joint == k)
-              result.*(it->second) = value;
-          }
-      }
+    for (const auto &o : parse_per_joint(per_joint))
+      if (o.joint == k)
+        result.*(o.member) = o.value;
     return result;
+  }
+
+  void
+  JointParameters::check_per_joint(const unsigned int n_joints) const
+  {
+    for (const auto &o : parse_per_joint(per_joint))
+      if (o.joint >= n_joints)
+        throw InputError(
+          "Contraction joints/Per joint: there is no joint " + std::to_string(o.joint) +
+          ": the model has " +
+          (n_joints == 0 ? std::string("no joints") :
+           n_joints == 1 ? std::string("one joint, number 0") :
+                           std::to_string(n_joints) + " joints, numbered 0 to " +
+                             std::to_string(n_joints - 1)) +
+          " (joint k lies between blocks k and k + 1).");
   }
 } // namespace archdam::joints

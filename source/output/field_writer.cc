@@ -1,9 +1,10 @@
+#include <archdam/base/on_rank_zero.h>
+#include <archdam/output/atomic_file.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/physics/solid/stress.h>
 
 #include <deal.II/numerics/data_out.h>
 
-#include <fstream>
 
 namespace archdam::output
 {
@@ -29,6 +30,42 @@ namespace archdam::output
                       Patterns::Bool());
     prm.add_parameter("Timer summary", timer_summary,
                       "Print wall times per stage at the end.", Patterns::Bool());
+  }
+
+  std::string
+  write_vtu_record(const DataOutInterface<dim, dim> &data_out, const std::string &directory,
+                   const std::string &base, const unsigned int index, const MPI_Comm comm)
+  {
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  name    = base + "_" + Utilities::int_to_string(index, 5);
+    const auto piece = [&](const unsigned int rank) {
+      return name + "." + Utilities::int_to_string(rank, Utilities::needed_digits(n_ranks - 1)) +
+             ".vtu";
+    };
+    std::string problem;
+    try
+      {
+        write_atomically(directory + "/" + piece(Utilities::MPI::this_mpi_process(comm)),
+                         [&](std::ostream &out) { data_out.write_vtu(out); });
+      }
+    catch (const InputError &e)
+      {
+        problem = e.what();
+      }
+    // Every piece is complete before the record names it, and if one rank
+    // could not write its piece, all stop.
+    if (Utilities::MPI::max(problem.empty() ? 0 : 1, comm) == 1)
+      throw InputError(problem.empty() ? "Output: another MPI process cannot write its piece "
+                                         "of '" + name + "'." :
+                                         problem);
+    on_rank_zero(comm, [&] {
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        pieces.push_back(piece(r));
+      write_atomically(directory + "/" + name + ".pvtu",
+                       [&](std::ostream &out) { data_out.write_pvtu_record(out, pieces); });
+    });
+    return name + ".pvtu";
   }
 
   FieldWriter::FieldWriter(const OutputParameters                   &p,
@@ -86,23 +123,26 @@ namespace archdam::output
     const unsigned int index = n_written++;
     if (vtu)
       {
-        const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-          p.directory + "/", "solution", index, space.comm, 5, 0);
+        const std::string pvtu =
+          write_vtu_record(data_out, p.directory, "solution", index, space.comm);
         pvd_records.emplace_back(s.time, pvtu);
-        if (Utilities::MPI::this_mpi_process(space.comm) == 0)
-          {
-            std::ofstream pvd(p.directory + "/solution.pvd");
+        on_rank_zero(space.comm, [&] {
+          write_atomically(p.directory + "/solution.pvd", [&](std::ostream &pvd) {
             DataOutBase::write_pvd_record(pvd, pvd_records);
-          }
+          });
+        });
       }
     if (hdf5)
       {
         DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(true, true));
         data_out.write_filtered_data(filter);
         const std::string h5 = "solution_" + Utilities::int_to_string(index, 5) + ".h5";
-        data_out.write_hdf5_parallel(filter, p.directory + "/" + h5, space.comm);
+        data_out.write_hdf5_parallel(filter, temporary_name(p.directory + "/" + h5), space.comm);
+        on_rank_zero(space.comm, [&] { commit_temporary(p.directory + "/" + h5); });
         xdmf_entries.push_back(data_out.create_xdmf_entry(filter, h5, s.time, space.comm));
-        data_out.write_xdmf_file(xdmf_entries, p.directory + "/solution.xdmf", space.comm);
+        data_out.write_xdmf_file(xdmf_entries, temporary_name(p.directory + "/solution.xdmf"),
+                                 space.comm);
+        on_rank_zero(space.comm, [&] { commit_temporary(p.directory + "/solution.xdmf"); });
       }
   }
 } // namespace archdam::output

@@ -1,8 +1,7 @@
-#include <archdam/base/input_error.h>
 #include <archdam/geometry/ids.h>
+#include <archdam/output/atomic_file.h>
 #include <archdam/output/mesh_writer.h>
 
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <map>
@@ -26,8 +25,13 @@ namespace archdam::output
       void
       write(const std::string &filename) const
       {
-        std::ofstream out(filename);
-        const auto    n = points.size() / corners;
+        write_atomically(filename, [&](std::ostream &out) { write(out); });
+      }
+
+      void
+      write(std::ostream &out) const
+      {
+        const auto n = points.size() / corners;
         out << std::setprecision(12)
             << "<?xml version=\"1.0\"?>\n"
                "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
@@ -55,8 +59,6 @@ namespace archdam::output
             out << "</DataArray>\n";
           }
         out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-        if (!out)
-          throw InputError("Output: cannot write '" + filename + "'.");
       }
     };
   } // namespace

@@ -1,8 +1,10 @@
+#include <archdam/base/on_rank_zero.h>
+#include <archdam/output/atomic_file.h>
+#include <archdam/output/field_writer.h>
 #include <archdam/output/mode_shapes.h>
 
 #include <deal.II/numerics/data_out.h>
 
-#include <fstream>
 
 namespace archdam::output
 {
@@ -36,13 +38,12 @@ namespace archdam::output
         data_out.add_data_vector(material, "material_id");
         data_out.build_patches(space.degree);
         records.emplace_back(k + 1,
-                             data_out.write_vtu_with_pvtu_record(directory + "/", "modes", k + 1,
-                                                                 space.comm, 5, 0));
+                             write_vtu_record(data_out, directory, "modes", k + 1, space.comm));
       }
-    if (Utilities::MPI::this_mpi_process(space.comm) == 0)
-      {
-        std::ofstream pvd(directory + "/modes.pvd");
+    on_rank_zero(space.comm, [&] {
+      write_atomically(directory + "/modes.pvd", [&](std::ostream &pvd) {
         DataOutBase::write_pvd_record(pvd, records);
-      }
+      });
+    });
   }
 } // namespace archdam::output

@@ -1,4 +1,6 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/on_rank_zero.h>
+#include <archdam/output/atomic_file.h>
 #include <archdam/output/pressure_recorder.h>
 
 #include <deal.II/base/mpi.h>
@@ -8,6 +10,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace archdam::output
 {
@@ -73,21 +76,23 @@ namespace archdam::output
     const auto          p = evaluate(state.u);
     row.insert(row.end(), p.begin(), p.end());
     rows.push_back(row);
-    if (Utilities::MPI::this_mpi_process(space.comm) != 0)
-      return;
-    std::ofstream csv(directory + "/pressure_histories.csv",
-                      rows.size() == 1 ? std::ios::trunc : std::ios::app);
-    if (rows.size() == 1)
-      {
-        csv << "time [s]";
-        for (const auto &pt : points)
-          csv << "," << pt.name << ".p [Pa]";
-        csv << "\n";
-      }
-    csv << std::setprecision(10);
-    for (unsigned int c = 0; c < row.size(); ++c)
-      csv << (c ? "," : "") << row[c];
-    csv << "\n";
+    on_rank_zero(space.comm, [&] {
+      std::ofstream csv(directory + "/pressure_histories.csv",
+                        rows.size() == 1 ? std::ios::trunc : std::ios::app);
+      std::ostringstream line;
+      if (rows.size() == 1)
+        {
+          line << "time [s]";
+          for (const auto &pt : points)
+            line << "," << pt.name << ".p [Pa]";
+          line << "\n";
+        }
+      line << std::setprecision(10);
+      for (unsigned int c = 0; c < row.size(); ++c)
+        line << (c ? "," : "") << row[c];
+      line << "\n";
+      append_line(csv, line.str());
+    });
   }
 
   void
@@ -105,7 +110,7 @@ namespace archdam::output
             best = r;
         at.push_back(best);
       }
-    std::ofstream csv(directory + "/pressure_profile.csv");
+    std::ostringstream csv;
     csv << "name,x [m],y [m],z [m]";
     for (const unsigned int r : at)
       csv << ",p at t = " << rows[r][0] << " s [Pa]";
@@ -122,5 +127,7 @@ namespace archdam::output
           csv << "," << rows[r][k + 1];
         csv << "," << hi << "," << lo << "\n";
       }
+    write_atomically(directory + "/pressure_profile.csv",
+                     [&](std::ostream &f) { f << csv.str(); });
   }
 } // namespace archdam::output

@@ -1,11 +1,9 @@
-#include <archdam/base/input_error.h>
+#include <archdam/output/atomic_file.h>
 #include <archdam/output/summary.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -113,14 +111,6 @@ namespace archdam::output
     print(root, 0);
     out << "\n";
 
-    const std::string tmp = filename + ".tmp";
-    {
-      std::ofstream f(tmp);
-      f << out.str();
-      if (!f)
-        throw InputError("Output: cannot write '" + tmp + "'.");
-    }
-    if (std::rename(tmp.c_str(), filename.c_str()) != 0)
-      throw InputError("Output: cannot rename '" + tmp + "' to '" + filename + "'.");
+    write_atomically(filename, [&](std::ostream &f) { f << out.str(); });
   }
 } // namespace archdam::output

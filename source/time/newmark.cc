@@ -27,6 +27,9 @@ namespace archdam::time
   void
   NewmarkParameters::check() const
   {
+    if (!(time_step > 0.))
+      throw InputError("Time integration: Time step must be positive (it is " +
+                       std::to_string(time_step) + " s).");
     if (beta1 < 0.5 || beta2 < 0.25 * (beta1 + 0.5) * (beta1 + 0.5) - 1e-12)
       throw InputError("Time integration: Beta1 = " + std::to_string(beta1) +
                        ", Beta2 = " + std::to_string(beta2) +

@@ -52,5 +52,10 @@ namespace archdam::joints
     /// Throws InputError for a malformed override or a value out of range.
     JointLaw
     law_of(unsigned int k) const;
+
+    /// Throws InputError if `Per joint` is malformed or names a joint the
+    /// model does not have (k >= @p n_joints).
+    void
+    check_per_joint(unsigned int n_joints) const;
   };
 } // namespace archdam::joints

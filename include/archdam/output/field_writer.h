@@ -27,11 +27,24 @@ namespace archdam::output
   };
 
   /**
+   * DataOutInterface::write_vtu_with_pvtu_record() with every file written
+   * atomically (output/atomic_file.h): each rank writes its piece
+   * `BASE_NNNNN.R.vtu`, then rank 0 the record `BASE_NNNNN.pvtu` naming them,
+   * so a record never names a missing or partial piece. Returns the record's
+   * name relative to @p directory. Collective.
+   */
+  std::string
+  write_vtu_record(const dealii::DataOutInterface<dim, dim> &data_out,
+                   const std::string &directory, const std::string &base, unsigned int index,
+                   MPI_Comm comm);
+
+  /**
    * Fields for ParaView: displacement, velocity, acceleration (with the
    * pressure component p and its rates), stress tensor, major and minor
    * principal stress, material id and MPI subdomain; as VTU pieces with a PVTU
    * per output and a PVD time series (`solution.pvd`), and as HDF5 with an
-   * XDMF index (`solution.xdmf`).
+   * XDMF index (`solution.xdmf`). Every file is written atomically, the PVD
+   * and XDMF indexes after the files they list.
    */
   class FieldWriter
   {

@@ -10,8 +10,10 @@ namespace archdam::output
 {
   /**
    * Time histories of the monitored quantities. Rank 0 appends one CSV row per
-   * step to `histories.csv` and flushes it, so a killed run leaves a valid
-   * prefix; at the end the whole table goes to `histories.h5` as the dataset
+   * step to `histories.csv` in one write and flushes it, so a killed run
+   * leaves a valid prefix of complete rows (output/atomic_file.h); at the end
+   * the whole table goes to `histories.h5` (written whole, then renamed) as
+   * the dataset
    * "histories" (rows = steps) with the column names as the attribute
    * "columns". Every row is also kept in memory for peaks and tests.
    */
@@ -40,9 +42,9 @@ namespace archdam::output
     }
 
   private:
+    MPI_Comm                         comm;
     std::string                      directory;
     std::vector<std::string>         names;
-    bool                             writer;
     std::ofstream                    csv;
     std::vector<std::vector<double>> table;
   };

@@ -1,0 +1,182 @@
+// Bad input the earlier error tests do not reach, as the user meets it on the
+// command line (doc/bad-input.md lists every row with its test): each case
+// must end with exit code 1 and one message naming the parameter (or file)
+// and what is wrong, never a crash, a hang or a run with a silently wrong
+// value. Each case is a valid short case (a box dam of two blocks, one
+// contraction joint) with one thing made wrong, mostly by --set.
+
+#include <archdam/application/command_line.h>
+
+#include "archdam_tests.h"
+
+#include <filesystem>
+#include <fstream>
+
+namespace
+{
+  void
+  write(const std::string &name, const std::string &text)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::ofstream(name) << text;
+    MPI_Barrier(MPI_COMM_WORLD);
+  }
+
+  void
+  run(const std::string &what, std::vector<std::string> args)
+  {
+    args.insert(args.begin(), "archdam");
+    std::vector<const char *> argv;
+    for (const auto &a : args)
+      argv.push_back(a.c_str());
+    std::ostringstream out, err;
+    const int code = archdam::run_command_line(argv.size(), argv.data(), out, err);
+    archdam::testing::log() << "* " << what << "\n  exit code " << code << "\n  "
+                            << err.str() << std::endl;
+  }
+
+  /// The good case with one more parameter.
+  void
+  run_set(const std::string &what, const std::string &assignment)
+  {
+    run(what, {"good.prm", "--set", assignment});
+  }
+
+  /// The good case with frictional joints and one more parameter.
+  void
+  run_joints(const std::string &what, const std::string &assignment)
+  {
+    run(what, {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
+               assignment});
+  }
+
+  const char *good_case = R"(
+subsection Mesh
+  subsection Box
+    set Number of blocks = 2
+    set Cells in y = 2
+    set Rock depth = 0
+  end
+end
+subsection Finite element
+  set Degree = 1
+end
+subsection Time integration
+  set End time = 0.02
+end
+subsection Output
+  set Directory = results
+  set Field output interval = 0
+  set Progress = false
+  set Timer summary = false
+end
+)";
+
+  // A PEER record whose one sample, 1e308 g, is a number but not in m/s^2.
+  const char *huge_at2 = "PEER NGA STRONG MOTION DATABASE RECORD\n"
+                         "test record\n"
+                         "ACCELERATION TIME SERIES IN UNITS OF G\n"
+                         "NPTS=    3, DT=   .0100 SEC\n"
+                         "  .1000E-01  1.0000E+308  .2000E-01\n";
+
+  /// A .msh file (format 2.2) of one unit hexahedron of material @p id.
+  std::string
+  gmsh_hexahedron(const int id)
+  {
+    return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n8\n1 0 0 0\n2 1 0 0\n"
+           "3 1 1 0\n4 0 1 0\n5 0 0 1\n6 1 0 1\n7 1 1 1\n8 0 1 1\n$EndNodes\n"
+           "$Elements\n1\n1 5 2 " +
+           std::to_string(id) + " 1 1 2 3 4 5 6 7 8\n$EndElements\n";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+
+  write("good.prm", good_case);
+  write("huge.AT2", huge_at2);
+  write("rock_only.msh", gmsh_hexahedron(1));
+  write("tetrahedron.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
+                           "2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
+                           "1 4 2 10 1 1 2 3 4\n$EndElements\n");
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      std::filesystem::create_directories("blocked_histories/histories.csv");
+      std::filesystem::create_directories("blocked_summary/summary.json");
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+
+  // Command line
+  run("two case files", {"good.prm", "good.prm"});
+  run("--print-parameters with two formats", {"--print-parameters", "json", "xml"});
+  run("--print-parameters with an unknown format", {"--print-parameters", "yaml"});
+
+  // Values out of range, inconsistent values
+  run_set("a time step of 0", "Time integration/Time step=0");
+  run_set("an end time shorter than one time step", "Time integration/End time=0.004");
+  run("damping frequencies in the wrong order",
+      {"good.prm", "--set", "Damping/Mode=damping ratio", "--set",
+       "Damping/First frequency=20", "--set", "Damping/Second frequency=10"});
+  run_set("no stage to run", "Analysis/Stages=");
+  run_set("an output directory inside a file", "Output/Directory=good.prm/results");
+
+  // Mesh
+  run_set("box cells across the dam not a multiple of the blocks", "Mesh/Box/Cells in y=3");
+  run_set("Mesh/Source = gmsh without a file", "Mesh/Source=gmsh");
+
+  run("a Gmsh mesh without dam cells", {"good.prm", "--set", "Mesh/Source=gmsh", "--set",
+                                        "Mesh/Gmsh/File=rock_only.msh"});
+  run("a Gmsh mesh of tetrahedra", {"good.prm", "--set", "Mesh/Source=gmsh", "--set",
+                                    "Mesh/Gmsh/File=tetrahedron.msh"});
+
+  // Combinations the program does not support, points outside their region
+  const std::string blocks = "Mesh/Gmsh/File=" SOURCE_DIR "/../prm/gmsh_blocks_v4.msh";
+  run("a massed foundation with compressible water",
+      {"good.prm", "--set", "Mesh/Source=gmsh", "--set", blocks, "--set",
+       "Reservoir/Model=compressible", "--set", "Foundation/Model=massed"});
+  run("a pressure point outside the water",
+      {"good.prm", "--set", "Mesh/Source=gmsh", "--set", blocks, "--set",
+       "Reservoir/Model=compressible", "--set", "Reservoir/Pressure points=dry: 5, 5, 5"});
+
+  // Result files that cannot be written (a directory in the way)
+  run_set("a directory where histories.csv goes", "Output/Directory=blocked_histories");
+  run_set("a directory where summary.json goes", "Output/Directory=blocked_summary");
+
+  // Monitors
+  run_set("a monitor name with a blank", "Monitors/Points=dam crest: 5, 10, 20");
+  run_set("a monitor point with two coordinates", "Monitors/Points=crest: 5, 10");
+  run_set("a monitor coordinate that is not a number", "Monitors/Points=crest: 5, 10, top");
+  run_set("a monitor name used twice", "Monitors/Points=a: 5, 10, 20; a: 5, 5, 20");
+
+  // Ground motion
+  run_set("a record sample beyond the range of double in m/s^2",
+          "Ground motion/Component x/File=huge.AT2");
+
+  // Contraction joints
+  run_set("a negative friction coefficient", "Contraction joints/Friction coefficient=-0.5");
+  run_set("a negative tensile strength", "Contraction joints/Tensile strength=-1e6");
+  run_joints("Per joint without ':'", "Contraction joints/Per joint=0 Cohesion = 1e5");
+  run_joints("Per joint with a joint that is not a number",
+             "Contraction joints/Per joint=first: Cohesion = 1e5");
+  run_joints("Per joint with a negative joint number",
+             "Contraction joints/Per joint=-1: Cohesion = 1e5");
+  run_joints("Per joint with a joint the model does not have",
+             "Contraction joints/Per joint=3: Cohesion = 1e5");
+  run_joints("Per joint with an unknown name",
+             "Contraction joints/Per joint=0: Friction = 0.5");
+  run_joints("Per joint without '='", "Contraction joints/Per joint=0: Cohesion 1e5");
+  run_joints("Per joint with a value that is not a number",
+             "Contraction joints/Per joint=0: Cohesion = high");
+  run_joints("Per joint with a negative friction coefficient",
+             "Contraction joints/Per joint=0: Friction coefficient = -0.2");
+  run_joints("a joint monitor point with two coordinates",
+             "Contraction joints/Monitor points=crest: 5, 10");
+  run_joints("a joint monitor coordinate that is not a number",
+             "Contraction joints/Monitor points=crest: 5, ten, 20");
+  run("joint monitor points in a dam of one block (no joints)",
+      {"good.prm", "--set", "Mesh/Box/Number of blocks=1", "--set",
+       "Contraction joints/Model=frictional contact", "--set",
+       "Contraction joints/Monitor points=crest: 5, 10, 20"});
+}

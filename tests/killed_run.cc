@@ -1,0 +1,268 @@
+// A run killed at any moment leaves only valid result files, and nothing it
+// had written before is lost (output/atomic_file.h; issue "reliability",
+// must show 2).
+//
+// The test runs the `archdam` application as a child process on a short
+// dynamic case (a box dam of two blocks on a fixed base, 2000 steps under a
+// sine ground motion, fields every 25 steps as VTU and HDF5, monitors every
+// step): once uninterrupted, the reference, then three times killed with
+// SIGKILL when its histories reach a chosen number of rows (drawn with a fixed
+// seed, so that the kill falls at different stages of a step: a history
+// append, a field write). After each kill:
+//  - every file left in the output directory parses: CSV (complete rows of
+//    numbers, as many as the header), JSON, XML (PVD, PVTU, VTU, XDMF), HDF5;
+//    an interrupted write may leave only a `*.tmp` file, which no index names;
+//  - histories.csv is a prefix of the reference's, byte for byte, with at
+//    least the rows seen before the kill;
+//  - solution.pvd names a prefix of the reference's outputs, every output of
+//    a step before the last recorded one included;
+//  - summary.json, written at the end only, is absent.
+// Serial only: the test kills one process (under mpirun the whole job would
+// be killed the same way, and every file is written by rank 0 or per rank).
+
+#include <deal.II/base/hdf5.h>
+
+#include "result_files.h"
+
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <random>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  std::string
+  yes(const bool b)
+  {
+    return b ? "yes" : "NO";
+  }
+
+  std::string
+  read(const fs::path &file)
+  {
+    std::ifstream in(file, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  }
+
+  const unsigned int n_steps = 2000, field_interval = 25;
+
+  const char *case_text = R"(
+subsection Mesh
+  subsection Box
+    set Length = 10
+    set Width = 20
+    set Height = 20
+    set Number of blocks = 2
+    set Cells in x = 1
+    set Cells in y = 2
+    set Cells in z = 2
+    set Rock depth = 0
+  end
+end
+subsection Finite element
+  set Degree = 1
+end
+subsection Time integration
+  set Time step = 0.001
+  set End time = 2
+end
+subsection Ground motion
+  subsection Component x
+    set File = record.txt
+    set Format = two-column
+    set Units = m/s^2
+  end
+end
+subsection Monitors
+  set Points = crest: 5, 10, 20
+  set Quantities = displacement, principal stress
+end
+subsection Output
+  set Field output interval = 25
+  set Field formats = vtu, hdf5
+  set Progress = false
+  set Timer summary = false
+end
+)";
+
+  /// Start `archdam case.prm` writing to @p directory; its output goes to
+  /// @p directory.log.
+  pid_t
+  start(const std::string &directory)
+  {
+    const pid_t pid = fork();
+    if (pid == 0)
+      {
+        const std::string log = directory + ".log";
+        std::freopen(log.c_str(), "w", stdout);
+        std::freopen(log.c_str(), "a", stderr);
+        const std::string set = "Output/Directory=" + directory;
+        execl(ARCHDAM_EXECUTABLE, "archdam", "case.prm", "--set", set.c_str(), nullptr);
+        std::_Exit(127);
+      }
+    return pid;
+  }
+
+  unsigned int
+  count_lines(const fs::path &file)
+  {
+    const auto text = read(file);
+    return std::count(text.begin(), text.end(), '\n');
+  }
+
+  /// Every result file in @p directory parses; "" or the first problem.
+  std::string
+  invalid_file(const fs::path &directory, unsigned int &n_checked)
+  {
+    n_checked = 0;
+    for (const auto &entry : fs::directory_iterator(directory))
+      {
+        const auto  name = entry.path().filename().string();
+        const auto  ext  = entry.path().extension().string();
+        std::string problem;
+        if (ext == ".tmp")
+          continue;
+        if (ext == ".csv")
+          {
+            const auto h = archdam::testing::read_csv_history(entry.path());
+            problem      = h.problem;
+          }
+        else if (ext == ".json")
+          {
+            boost::property_tree::ptree tree;
+            problem = archdam::testing::json_problem(entry.path(), tree);
+          }
+        else if (ext == ".pvd" || ext == ".pvtu" || ext == ".vtu" || ext == ".xdmf")
+          try
+            {
+              boost::property_tree::ptree tree;
+              boost::property_tree::read_xml(entry.path(), tree);
+            }
+          catch (const std::exception &e)
+            {
+              problem = e.what();
+            }
+        else if (ext == ".h5")
+          try
+            {
+              dealii::HDF5::File file(entry.path(), dealii::HDF5::File::FileAccessMode::open);
+            }
+          catch (...)
+            {
+              problem = "does not open as HDF5";
+            }
+        else
+          problem = "unexpected file";
+        if (!problem.empty())
+          return name + ": " + problem;
+        ++n_checked;
+      }
+    return "";
+  }
+
+  /// The DataSet lines of a PVD file.
+  std::vector<std::string>
+  pvd_entries(const fs::path &pvd)
+  {
+    std::vector<std::string> entries;
+    std::stringstream        s(read(pvd));
+    for (std::string line; std::getline(s, line);)
+      if (line.find("<DataSet") != std::string::npos)
+        entries.push_back(line);
+    return entries;
+  }
+} // namespace
+
+int
+main()
+{
+  std::ofstream("case.prm") << case_text;
+  {
+    std::ofstream r("record.txt");
+    for (unsigned int k = 0; k <= 2 * n_steps / 10; ++k)
+      r << 0.01 * k << " " << 0.5 * std::sin(12. * 0.01 * k) << "\n";
+  }
+
+  // The reference: the whole run.
+  fs::remove_all("reference");
+  int status = 0;
+  waitpid(start("reference"), &status, 0);
+  const auto reference_csv = read("reference/histories.csv");
+  const auto reference_pvd = pvd_entries("reference/solution.pvd");
+  std::cout << "uninterrupted run: exit code " << WEXITSTATUS(status) << ", "
+            << count_lines("reference/histories.csv") - 1 << " history rows (expected "
+            << n_steps + 1 << "), " << reference_pvd.size() << " field outputs (expected "
+            << 1 + n_steps / field_interval << ")" << std::endl;
+
+  // The checks below can fail: a history cut in the middle of a row, and an
+  // index cut in the middle, are rejected.
+  fs::create_directories("cut");
+  std::ofstream("cut/histories.csv")
+    << reference_csv.substr(0, reference_csv.find('\n', reference_csv.size() / 2) + 5);
+  const auto reference_pvd_text = read("reference/solution.pvd");
+  std::ofstream("cut/solution.pvd") << reference_pvd_text.substr(0, reference_pvd_text.size() / 2);
+  unsigned int n_cut = 0;
+  std::cout << "a history cut inside a row is rejected: "
+            << yes(!archdam::testing::read_csv_history("cut/histories.csv").valid)
+            << "\nan index cut in the middle is rejected: "
+            << yes(!archdam::testing::pvd_problem("cut", "solution.pvd", n_cut).empty())
+            << std::endl;
+
+  std::mt19937                                rng(2026);
+  std::uniform_int_distribution<unsigned int> draw(50, n_steps - 100);
+  for (unsigned int k = 0; k < 3; ++k)
+    {
+      const unsigned int target    = draw(rng);
+      const std::string  directory = "killed_" + std::to_string(k);
+      fs::remove_all(directory);
+      const pid_t pid = start(directory);
+      // Wait until the histories hold `target` rows (header + rows lines).
+      unsigned int seen = 0;
+      while (seen < target + 1)
+        {
+          std::this_thread::sleep_for(std::chrono::microseconds(200));
+          if (fs::exists(directory + "/histories.csv"))
+            seen = count_lines(directory + "/histories.csv");
+          if (waitpid(pid, &status, WNOHANG) == pid)
+            break; // ended before the kill: reported below
+        }
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      std::cout << "* killed after at least " << target << " history rows: "
+                << yes(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << std::endl;
+
+      unsigned int n_checked = 0;
+      const auto   problem   = invalid_file(directory, n_checked);
+      std::cout << "  every result file left parses: " << yes(problem.empty()) << problem
+                << std::endl;
+
+      const auto csv = read(directory + "/histories.csv");
+      std::cout << "  histories.csv is a prefix of the uninterrupted run's: "
+                << yes(reference_csv.compare(0, csv.size(), csv) == 0)
+                << "\n  with at least the rows seen before the kill: "
+                << yes(count_lines(directory + "/histories.csv") >= seen) << std::endl;
+
+      // Fields of every step before the last recorded one are complete (a
+      // step appends its history row before writing its fields); the static
+      // stage's output comes first.
+      const auto         pvd          = pvd_entries(directory + "/solution.pvd");
+      const unsigned int last_step    = count_lines(directory + "/histories.csv") - 2;
+      const unsigned int at_least     = 1 + (last_step == 0 ? 0 : (last_step - 1) / field_interval);
+      bool               prefix       = pvd.size() <= reference_pvd.size();
+      for (unsigned int i = 0; prefix && i < pvd.size(); ++i)
+        prefix = pvd[i] == reference_pvd[i];
+      unsigned int n_files = 0;
+      const auto   named   = archdam::testing::pvd_problem(directory, "solution.pvd", n_files);
+      std::cout << "  solution.pvd names a prefix of the uninterrupted run's outputs: "
+                << yes(prefix) << "\n  with every output before the last recorded step: "
+                << yes(pvd.size() >= at_least)
+                << "\n  every file it names exists and parses: " << yes(named.empty()) << named
+                << "\n  summary.json absent (written at the end): "
+                << yes(!fs::exists(directory + "/summary.json")) << std::endl;
+    }
+}
