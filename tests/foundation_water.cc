@@ -35,8 +35,15 @@
 //    water's columns (solid M, D, K columns only), and without the damping
 //    columns, must be off by more than 100 times that tolerance: both parts
 //    of the update matter.
+// C. The viscous boundary with water: the integrator with a general damping
+//    matrix takes the boundary's dashpots. On the rock box of B without
+//    water (the viscous boundary prescribes nothing), under a load pulse:
+//    D = alpha M + beta K given as a matrix with the dashpots, against the
+//    Rayleigh integrator with the same dashpots, to 1e-9 of the peak; the
+//    general one without the dashpots must differ by more than 1e-4.
 
 #include <archdam/geometry/splitter.h>
+#include <archdam/physics/foundation/massed_foundation.h>
 #include <archdam/physics/foundation/outer_boundary.h>
 #include <archdam/physics/reservoir/coupled_system.h>
 #include <archdam/physics/solid/solid_operators.h>
@@ -406,6 +413,83 @@ namespace
                          << (std::max(err_u, err_p) > 1e-4 ? "yes" : "NO") << std::endl;
       }
   }
+
+  void
+  viscous_dashpots()
+  {
+    testing::log() << "C. dashpots of the viscous boundary with a general damping matrix"
+                   << std::endl;
+    parallel::shared::Triangulation<3> tria(MPI_COMM_WORLD);
+    testing::rock_box(tria, Point<3>(0, 0, -30), Point<3>(40, 30, 0), {4, 3, 3},
+                      ids::foundation_sides);
+    physics::foundation::FoundationParameters fp;
+    fp.model                 = "massed";
+    fp.transmitting_boundary = "viscous";
+    fe::FiniteElementParameters fep;
+    fep.degree = 1;
+    fe::FESpace space(tria, fep);
+    space.setup(fp.fixed_boundaries());
+    solid::MaterialParameters materials;
+    materials.rock = testing::test_rock();
+    archdam::SparseMatrix M, K, D;
+    solid::assemble_mass_and_stiffness(space, materials, solid::InertiaOf::dam_and_rock, M, K);
+    const physics::foundation::FreeField free_field({}, materials.rock, 0., -30.);
+    time::NewmarkParameters              tp;
+    tp.time_step = 2e-3;
+    physics::foundation::MassedFoundation massed(fp, space, materials,
+                                                 solid::InertiaOf::dam_and_rock, free_field,
+                                                 tp.time_step);
+    const std::pair<double, double> rayleigh{0.5, 0.002};
+    reservoir::linear_combination(D, {{rayleigh.first, &M}, {rayleigh.second, &K}});
+
+    // a vertical load pulse on the top surface's middle node
+    archdam::Vector pattern;
+    space.reinit(pattern);
+    for (const auto &[i, pc] : testing::dof_positions(space))
+      if (pc.second == 2 && pc.first.distance(Point<3>(20, 10, 0)) < 1e-6 &&
+          space.locally_owned.is_element(i))
+        pattern(i) = -1e6;
+    pattern.compress(VectorOperation::insert);
+    const testing::Sin4Pulse g{1., 0.05};
+
+    const auto run = [&](time::NewmarkIntegrator &newmark) {
+      std::vector<archdam::Vector> u;
+      time::NewmarkState           s;
+      archdam::Vector              load;
+      for (archdam::Vector *v : {&s.u, &s.v, &s.a, &load})
+        space.reinit(*v);
+      for (unsigned int n = 1; n <= 100; ++n)
+        {
+          load = pattern;
+          load *= g.value(n * tp.time_step);
+          newmark.advance(load, s);
+          u.push_back(s.u);
+        }
+      return u;
+    };
+    time::NewmarkIntegrator rayleigh_integrator(tp, M, K, rayleigh, space.constraints,
+                                                massed.dashpots());
+    time::NewmarkIntegrator general(tp, M, D, K, space.constraints, true, massed.dashpots());
+    time::NewmarkIntegrator without(tp, M, D, K, space.constraints, true);
+    const auto reference = run(rayleigh_integrator);
+    double     peak      = 0.;
+    for (const auto &u : reference)
+      peak = std::max(peak, u.linfty_norm());
+    const auto difference = [&](const std::vector<archdam::Vector> &u) {
+      double d = 0.;
+      for (unsigned int n = 0; n < u.size(); ++n)
+        {
+          archdam::Vector e = u[n];
+          e -= reference[n];
+          d = std::max(d, e.linfty_norm());
+        }
+      return d / peak;
+    };
+    testing::check_below("  with the dashpots: max |u - u_Rayleigh| / peak", difference(run(general)),
+                         1e-9);
+    testing::log() << "  without the dashpots: off by more than 1e-4 of the peak: "
+                   << (difference(run(without)) > 1e-4 ? "yes" : "NO") << std::endl;
+  }
 } // namespace
 
 int
@@ -414,4 +498,5 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   rigid_base();
   flexible_rock();
+  viscous_dashpots();
 }
