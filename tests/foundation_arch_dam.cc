@@ -1,6 +1,7 @@
 // The arch dam on a massed foundation with the MTF against the same dam on a
 // massless foundation (issue must-show: massed and massless side by side),
-// without water until the reservoir physics is merged. A coarse version of
+// empty reservoir, glued joints (foundation_arch_dam_water: with water and
+// joints in frictional contact). A coarse version of
 // prm/arch_dam_massed_foundation.prm (4 blocks, one cell through the
 // thickness, rock cells of 120 m, linear elements), 2 s of the El Centro
 // record in the stream direction, static stage (gravity) first.
@@ -14,7 +15,6 @@
 //   massless one (ratio within 1/3 ... 3: radiation damping and the wave
 //   passage change it, they do not remove it or multiply it);
 // - Kbar factorized once in each run (one call of "dynamic: factorization").
-// The joint opening column comes with the contraction-joint physics.
 
 #include <archdam/analysis/simulation.h>
 

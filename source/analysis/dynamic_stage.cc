@@ -59,9 +59,16 @@ namespace archdam::analysis
           physics::reservoir::form_coupled_system(*fluid_operators, p.reservoir.density,
                                                   p.time_integration.beta2, dt, mass_matrix,
                                                   stiffness_matrix, rayleigh, *coupled);
+          // A prescribed outer boundary drives the water too (numerics.md §5).
+          if (auto *boundary = massed_foundation ? massed_foundation->prescribed_dofs() : nullptr)
+            physics::reservoir::form_coupled_columns(*fe_space, interface_pairs,
+                                                     p.reservoir.density,
+                                                     p.time_integration.beta2, dt, rayleigh,
+                                                     *boundary);
           newmark = std::make_unique<time::NewmarkIntegrator>(
             p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
-            fe_space->constraints, false);
+            fe_space->constraints, false,
+            massed_foundation ? massed_foundation->dashpots() : nullptr);
         }
       else
         newmark = std::make_unique<time::NewmarkIntegrator>(

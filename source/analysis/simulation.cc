@@ -170,18 +170,7 @@ namespace archdam::analysis
 
     ground_motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
     if (p.foundation.rock_has_mass())
-      {
-        // The boundary update (time::NewmarkIntegrator::advance with
-        // prescribed DOFs) carries the Rayleigh-damped solid columns only,
-        // not the coupled water system's.
-        if (p.reservoir.has_pressure())
-          throw InputError("Foundation/Model = massed with Reservoir/Model = " +
-                           p.reservoir.model +
-                           " is not supported yet: use the westergaard or none reservoir "
-                           "model with the massed foundation, or the massless foundation "
-                           "with water.");
-        setup_massed_foundation(inertia);
-      }
+      setup_massed_foundation(inertia);
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
     fields  = std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials);
     if (p.reservoir.has_pressure())

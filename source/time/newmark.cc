@@ -64,18 +64,24 @@ namespace archdam::time
     AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), 1. + alpha * p.beta1 * dt,
                         static_cast<Mat>(M), SAME_NONZERO_PATTERN) == 0,
                 ExcMessage("PETSc MatAXPY failed."));
-    if (dashpots)
-      {
-        tmp.reinit(*dashpots);
-        tmp.equ(p.beta1 * dt, *dashpots);
-        AssertThrow(MatDiagonalSet(effective_matrix.petsc_matrix(), tmp, ADD_VALUES) == 0,
-                    ExcMessage("PETSc MatDiagonalSet failed."));
-      }
+    add_dashpots_to_effective_matrix();
     effective_operator.factorize(effective_matrix, true);
 
     const IndexSet owned = M.locally_owned_range_indices();
-    for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_u, &reduced_load})
+    for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
+                      &reduced_load})
       v->reinit(owned, M.get_mpi_communicator());
+  }
+
+  void
+  NewmarkIntegrator::add_dashpots_to_effective_matrix()
+  {
+    if (!dashpots)
+      return;
+    tmp.reinit(*dashpots);
+    tmp.equ(p.beta1 * dt, *dashpots);
+    AssertThrow(MatDiagonalSet(effective_matrix.petsc_matrix(), tmp, ADD_VALUES) == 0,
+                ExcMessage("PETSc MatDiagonalSet failed."));
   }
 
   NewmarkIntegrator::NewmarkIntegrator(const NewmarkParameters         &p,
@@ -83,7 +89,8 @@ namespace archdam::time
                                        const SparseMatrix              &damping,
                                        const SparseMatrix              &stiffness,
                                        const AffineConstraints<double> &constraints,
-                                       const bool                       positive_definite)
+                                       const bool                       positive_definite,
+                                       const Vector                    *boundary_dashpots)
     : p(p)
     , dt(p.time_step)
     , M(mass)
@@ -92,6 +99,7 @@ namespace archdam::time
     , alpha(0.)
     , beta(0.)
     , constraints(constraints)
+    , dashpots(boundary_dashpots)
   {
     // Kbar = M + beta1 dt D + beta2 dt^2 K on the common pattern.
     effective_matrix.reinit(K);
@@ -101,10 +109,12 @@ namespace archdam::time
       AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), c, static_cast<Mat>(*A),
                           SAME_NONZERO_PATTERN) == 0,
                   ExcMessage("PETSc MatAXPY failed."));
+    add_dashpots_to_effective_matrix();
     effective_operator.factorize(effective_matrix, positive_definite);
 
     const IndexSet owned = M.locally_owned_range_indices();
-    for (Vector *v : {&up, &vp, &rhs, &tmp, &da})
+    for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
+                      &reduced_load})
       v->reinit(owned, M.get_mpi_communicator());
   }
 
@@ -169,6 +179,7 @@ namespace archdam::time
     std::vector<double> u1, v1, a1;
     std::vector<types::global_dof_index> mine;
     prescribed_a = 0.;
+    prescribed_v = 0.;
     prescribed_u = 0.;
     for (unsigned int k = 0; k < prescribed.dofs.size(); ++k)
       {
@@ -182,16 +193,25 @@ namespace archdam::time
         v1.push_back(s.v[i] + dt * s.a[i] + p.beta1 * dt * da_i);
         a1.push_back(s.a[i] + da_i);
         prescribed_a(i) = a1.back() + alpha * v1.back();
+        prescribed_v(i) = v1.back();
         prescribed_u(i) = u1.back() + beta * v1.back();
       }
-    prescribed_a.compress(VectorOperation::insert);
-    prescribed_u.compress(VectorOperation::insert);
+    for (Vector *v : {&prescribed_a, &prescribed_v, &prescribed_u})
+      v->compress(VectorOperation::insert);
 
     reduced_load = load_next;
     prescribed.mass_columns.vmult(tmp, prescribed_a);
     reduced_load -= tmp;
     prescribed.stiffness_columns.vmult(tmp, prescribed_u);
     reduced_load -= tmp;
+    if (D != nullptr) // a general damping matrix: its own columns
+      {
+        AssertThrow(prescribed.damping_columns.m() == M.m(),
+                    ExcMessage("Prescribed DOFs with a general damping matrix need the "
+                               "columns of that matrix (PrescribedDofs::damping_columns)."));
+        prescribed.damping_columns.vmult(tmp, prescribed_v);
+        reduced_load -= tmp;
+      }
     advance(reduced_load, s, solve);
 
     // advance() left the constrained DOFs at their predictors: set them.

@@ -38,10 +38,11 @@ namespace archdam::time
   /**
    * Prescribed motion on constrained DOFs (numerics.md §5: the outer boundary
    * of a massed foundation). The DOFs are constrained (homogeneously) in the
-   * model's M and K, so Kbar keeps them fixed and stays factorized once; their
-   * coupling to the free DOFs is carried by the full (unconstrained) columns
-   * of M and K at these DOFs, assembled apart
-   * (solid::assemble_mass_and_stiffness_columns).
+   * model's M, D and K, so Kbar keeps them fixed and stays factorized once;
+   * their coupling to the free DOFs is carried by the full (unconstrained)
+   * columns of M, D and K at these DOFs, assembled apart
+   * (solid::assemble_mass_and_stiffness_columns; for the coupled dam-water
+   * system reservoir::form_coupled_columns adds the water's rows).
    */
   struct PrescribedDofs
   {
@@ -49,6 +50,10 @@ namespace archdam::time
     std::vector<dealii::types::global_dof_index> dofs;
     /// Columns of the full M and K at `dofs` (rows at other DOFs are used).
     SparseMatrix mass_columns, stiffness_columns;
+    /// Columns of the full D at `dofs`, for the integrator with a general
+    /// damping matrix only (with Rayleigh damping they are alpha M + beta K
+    /// of the columns above, and this matrix is not used).
+    SparseMatrix damping_columns;
   };
 
   /**
@@ -83,13 +88,15 @@ namespace archdam::time
      *   Kbar da = F_{n+1} - M a_n - D v^p - K u^p.
      * M, D and K share one sparsity pattern; Kbar must be symmetric, and is
      * factorized once as Cholesky if @p positive_definite, else as LDL^T.
+     * Optional @p boundary_dashpots as in the constructor above.
      */
     NewmarkIntegrator(const NewmarkParameters                 &p,
                       const SparseMatrix                      &mass,
                       const SparseMatrix                      &damping,
                       const SparseMatrix                      &stiffness,
                       const dealii::AffineConstraints<double> &constraints,
-                      bool                                     positive_definite);
+                      bool                                     positive_definite,
+                      const Vector *boundary_dashpots = nullptr);
 
     /**
      * Solver of one step's Kbar da = rhs. The default is the back-substitution
@@ -110,9 +117,10 @@ namespace archdam::time
      *   da_b = (u_next - u^p_b) / (beta2 dt^2),
      * and with their state at t_{n+1} known, the free DOFs take the load
      *   F_{n+1} - M_fb (a_b + alpha v_b) - K_fb (u_b + beta v_b)   (at t_{n+1})
-     * from the prescribed columns, which equals the full effective load minus
-     * Kbar_fb da_b. The solve itself is advance() with the DOFs fixed, so Kbar
-     * is not touched.
+     * from the prescribed columns (F_{n+1} - M_fb a_b - D_fb v_b - K_fb u_b
+     * with a general damping matrix), which equals the full effective load
+     * minus Kbar_fb da_b. The solve itself is advance() with the DOFs fixed,
+     * so Kbar is not touched.
      */
     void
     advance(const Vector              &load_next,
@@ -163,6 +171,10 @@ namespace archdam::time
     FactorizedOperator                       effective_operator;
     const Vector                            *dashpots = nullptr; // boundary dashpots, if any
     Vector                                   up, vp, rhs, tmp, da;
-    Vector                                   prescribed_a, prescribed_u, reduced_load;
+    Vector prescribed_a, prescribed_v, prescribed_u, reduced_load;
+
+    /// Add beta1 dt diag(dashpots) to Kbar (the viscous boundary).
+    void
+    add_dashpots_to_effective_matrix();
   };
 } // namespace archdam::time

@@ -44,6 +44,31 @@ namespace archdam::physics::foundation
     const MappingQ1<dim>        mapping;
     const GridTools::Cache<dim> cache(space.dof_handler.get_triangulation(), mapping);
     const auto                 &fe = space.fe_collection[fe::FESpace::solid_index];
+    // The cell around a point, a rock cell if there is one: where the water
+    // lies on the rock, a point on the wetted face belongs to a water cell
+    // too. The second search is restricted to the rock's vertices (the split
+    // mesh gives water and rock no common vertex); it is only a fallback, as
+    // a search from the nearest marked vertex can miss the cell of a point in
+    // stretched cells. Throws if no cell contains the point.
+    const auto       &tria = space.dof_handler.get_triangulation();
+    std::vector<bool> rock_vertices(tria.n_vertices(), false);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->material_id() == ids::rock)
+        for (const auto v : cell->vertex_indices())
+          rock_vertices[cell->vertex_index(v)] = true;
+    const auto in_rock = [&](const Point<dim> &x) {
+      const auto found = GridTools::find_active_cell_around_point(cache, x);
+      if (found.first.state() == IteratorState::valid && found.first->material_id() != ids::rock)
+        try
+          {
+            const auto rock = GridTools::find_active_cell_around_point(cache, x, {}, rock_vertices);
+            if (rock.first.state() == IteratorState::valid && rock.first->material_id() == ids::rock)
+              return rock;
+          }
+        catch (...)
+          {}
+      return found;
+    };
 
     stencil_offset.push_back(0);
     IndexSet needed(space.dof_handler.n_dofs());
@@ -62,7 +87,7 @@ namespace archdam::physics::foundation
             std::pair<Triangulation<dim>::active_cell_iterator, Point<dim>> found;
             try
               {
-                found = GridTools::find_active_cell_around_point(cache, x);
+                found = in_rock(x);
               }
             catch (...)
               {
@@ -78,7 +103,7 @@ namespace archdam::physics::foundation
                 // outside the rock. Take the nearest point of the rock cell at
                 // the node if it is close (a quarter of j c_a dt); a point far
                 // outside means the rock is too thin for the formula.
-                const auto at_node = GridTools::find_active_cell_around_point(cache, b.position);
+                const auto at_node = in_rock(b.position);
                 if (at_node.first.state() == IteratorState::valid &&
                     at_node.first->material_id() == ids::rock)
                   {

@@ -43,4 +43,25 @@ namespace archdam::physics::reservoir
         system.fluid_influence[d] *= phi;
       }
   }
+
+  void
+  form_coupled_columns(const fe::FESpace                &space,
+                       const std::vector<InterfacePair> &pairs,
+                       const double                      density,
+                       const double                      beta2,
+                       const double                      dt,
+                       const std::pair<double, double>   rayleigh,
+                       time::PrescribedDofs             &prescribed)
+  {
+    const double phi = -beta2 * dt * dt / density; // paper eq. 3.2, as above
+    linear_combination(prescribed.damping_columns,
+                       {{rayleigh.first, &prescribed.mass_columns},
+                        {rayleigh.second, &prescribed.stiffness_columns}});
+    SparseMatrix S_columns;
+    assemble_coupling_columns(space, density, pairs, prescribed.dofs, S_columns);
+    // The solid's columns and S's have different patterns: PETSc merges them.
+    AssertThrow(MatAXPY(prescribed.mass_columns.petsc_matrix(), phi,
+                        static_cast<Mat>(S_columns), DIFFERENT_NONZERO_PATTERN) == 0,
+                ExcMessage("PETSc MatAXPY failed."));
+  }
 } // namespace archdam::physics::reservoir

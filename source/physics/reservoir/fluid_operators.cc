@@ -9,10 +9,13 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/numerics/rtree.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
 #include <sstream>
 
 namespace archdam::physics::reservoir
@@ -225,82 +228,119 @@ namespace archdam::physics::reservoir
     }
 
     /**
-     * S = rho_w int N_f^T n^T N_s over every interface pair, on the smaller
+     * S = rho_w int N_f^T n^T N_s of one interface pair, on the smaller
      * face's quadrature; the larger face's cell is evaluated at those points
      * through the inverse of its mapping (numerics.md §4, architecture.md §3).
+     * Also the pair's part of the influence S iota_d.
      */
+    class PairCoupling
+    {
+    public:
+      PairCoupling(const fe::FESpace &space, const double density)
+        : space(space)
+        , density(density)
+        , fe_f(space.fe_collection[fe::FESpace::fluid_index])
+        , fe_s(space.fe_collection[fe::FESpace::solid_index])
+        , face_f(mapping, fe_f, space.face_q_collection[fe::FESpace::fluid_index], flags())
+        , face_s(mapping, fe_s, space.face_q_collection[fe::FESpace::fluid_index], flags())
+        , matrix(fe_f.n_dofs_per_cell(), fe_s.n_dofs_per_cell())
+        , dofs_f(fe_f.n_dofs_per_cell())
+        , dofs_s(fe_s.n_dofs_per_cell())
+      {
+        for (auto &v : influence)
+          v.reinit(fe_f.n_dofs_per_cell());
+      }
+
+      static UpdateFlags
+      flags()
+      {
+        return update_values | update_quadrature_points | update_normal_vectors |
+               update_JxW_values;
+      }
+
+      void
+      integrate(const InterfacePair &pair)
+      {
+        // The smaller face gives the points, weights and normal; the other
+        // cell is evaluated at the same points.
+        FEFaceValues<dim> &own = pair.integrate_on_fluid ? face_f : face_s;
+        own.reinit(pair.integrate_on_fluid ? pair.fluid_cell : pair.solid_cell,
+                   pair.integrate_on_fluid ? pair.fluid_face : pair.solid_face);
+        const auto &other_cell = pair.integrate_on_fluid ? pair.solid_cell : pair.fluid_cell;
+        const auto &other_fe   = pair.integrate_on_fluid ? fe_s : fe_f;
+        std::vector<Point<dim>> unit(own.n_quadrature_points);
+        for (const unsigned int q : own.quadrature_point_indices())
+          unit[q] = mapping.transform_real_to_unit_cell(other_cell, own.quadrature_point(q));
+        FEValues<dim> other(mapping, other_fe, Quadrature<dim>(unit), update_values);
+        other.reinit(other_cell);
+        const FEValuesBase<dim> &at_f =
+          pair.integrate_on_fluid ? static_cast<const FEValuesBase<dim> &>(own) : other;
+        const FEValuesBase<dim> &at_s =
+          pair.integrate_on_fluid ? other : static_cast<const FEValuesBase<dim> &>(own);
+
+        const unsigned int n_f = dofs_f.size(), n_s = dofs_s.size();
+        std::vector<double>         phi_f(n_f);
+        std::vector<Tensor<1, dim>> phi_s(n_s);
+        matrix = 0.;
+        for (auto &v : influence)
+          v = 0.;
+        for (const unsigned int q : own.quadrature_point_indices())
+          {
+            // the water's outward normal points into the solid
+            const Tensor<1, dim> n = pair.integrate_on_fluid ?
+                                       own.normal_vector(q) :
+                                       Tensor<1, dim>(-own.normal_vector(q));
+            const double w = density * own.JxW(q);
+            for (unsigned int i = 0; i < n_f; ++i)
+              phi_f[i] = at_f[space.pressure].value(i, q);
+            for (unsigned int j = 0; j < n_s; ++j)
+              phi_s[j] = at_s[space.displacement].value(j, q);
+            for (unsigned int i = 0; i < n_f; ++i)
+              {
+                for (unsigned int j = 0; j < n_s; ++j)
+                  matrix(i, j) += phi_f[i] * (n * phi_s[j]) * w;
+                for (unsigned int d = 0; d < dim; ++d)
+                  influence[d](i) += phi_f[i] * n[d] * w;
+              }
+          }
+        pair.fluid_cell->get_dof_indices(dofs_f);
+        pair.solid_cell->get_dof_indices(dofs_s);
+      }
+
+    private:
+      const Mapping<dim>   &mapping = StaticMappingQ1<dim>::mapping;
+      const fe::FESpace    &space;
+      const double          density;
+      const FiniteElement<dim> &fe_f, &fe_s;
+      FEFaceValues<dim>     face_f, face_s;
+
+    public:
+      // The last pair's results: its cell matrix of S (fluid x solid DOFs),
+      // influence and DOFs.
+      FullMatrix<double>                      matrix;
+      std::array<dealii::Vector<double>, dim> influence;
+      std::vector<types::global_dof_index>    dofs_f, dofs_s;
+    };
+
+    /// S, S^T and the influence S iota_d over every interface pair.
     void
     assemble_coupling(const fe::FESpace &space, const ReservoirParameters &p,
                       const std::vector<InterfacePair> &pairs, FluidOperators &ops)
     {
-      const auto &fe_f = space.fe_collection[fe::FESpace::fluid_index];
-      const auto &fe_s = space.fe_collection[fe::FESpace::solid_index];
-      const auto &quad = space.face_q_collection[fe::FESpace::fluid_index];
-      const auto &mapping = StaticMappingQ1<dim>::mapping;
-      const UpdateFlags flags = update_values | update_quadrature_points |
-                                update_normal_vectors | update_JxW_values;
-      FEFaceValues<dim> face_f(mapping, fe_f, quad, flags), face_s(mapping, fe_s, quad, flags);
-
-      const unsigned int n_f = fe_f.n_dofs_per_cell(), n_s = fe_s.n_dofs_per_cell();
-      FullMatrix<double> cell_s(n_f, n_s), cell_st(n_s, n_f);
-      std::array<dealii::Vector<double>, dim> cell_influence;
-      for (auto &v : cell_influence)
-        v.reinit(n_f);
-      std::vector<types::global_dof_index> dofs_f(n_f), dofs_s(n_s);
-      std::vector<double>          phi_f(n_f);
-      std::vector<Tensor<1, dim>>  phi_s(n_s);
-
+      PairCoupling       coupling(space, p.density);
+      FullMatrix<double> transposed;
       for (const auto &pair : pairs)
         if (pair.fluid_cell->is_locally_owned())
           {
-            // The smaller face gives the points, weights and normal; the other
-            // cell is evaluated at the same points.
-            FEFaceValues<dim> &own = pair.integrate_on_fluid ? face_f : face_s;
-            own.reinit(pair.integrate_on_fluid ? pair.fluid_cell : pair.solid_cell,
-                       pair.integrate_on_fluid ? pair.fluid_face : pair.solid_face);
-            const auto  &other_cell = pair.integrate_on_fluid ? pair.solid_cell : pair.fluid_cell;
-            const auto  &other_fe   = pair.integrate_on_fluid ? fe_s : fe_f;
-            std::vector<Point<dim>> unit(own.n_quadrature_points);
-            for (const unsigned int q : own.quadrature_point_indices())
-              unit[q] = mapping.transform_real_to_unit_cell(other_cell, own.quadrature_point(q));
-            FEValues<dim> other(mapping, other_fe, Quadrature<dim>(unit), update_values);
-            other.reinit(other_cell);
-            const FEValuesBase<dim> &at_f = pair.integrate_on_fluid ?
-                                              static_cast<const FEValuesBase<dim> &>(own) :
-                                              other;
-            const FEValuesBase<dim> &at_s = pair.integrate_on_fluid ?
-                                              other :
-                                              static_cast<const FEValuesBase<dim> &>(own);
-
-            cell_s = 0.;
-            for (auto &v : cell_influence)
-              v = 0.;
-            for (const unsigned int q : own.quadrature_point_indices())
-              {
-                // the water's outward normal points into the solid
-                const Tensor<1, dim> n =
-                  pair.integrate_on_fluid ? own.normal_vector(q) : Tensor<1, dim>(-own.normal_vector(q));
-                const double w = p.density * own.JxW(q);
-                for (unsigned int i = 0; i < n_f; ++i)
-                  phi_f[i] = at_f[space.pressure].value(i, q);
-                for (unsigned int j = 0; j < n_s; ++j)
-                  phi_s[j] = at_s[space.displacement].value(j, q);
-                for (unsigned int i = 0; i < n_f; ++i)
-                  {
-                    for (unsigned int j = 0; j < n_s; ++j)
-                      cell_s(i, j) += phi_f[i] * (n * phi_s[j]) * w;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      cell_influence[d](i) += phi_f[i] * n[d] * w;
-                  }
-              }
-            cell_st.copy_transposed(cell_s);
-            pair.fluid_cell->get_dof_indices(dofs_f);
-            pair.solid_cell->get_dof_indices(dofs_s);
-            space.constraints.distribute_local_to_global(cell_s, dofs_f, dofs_s, ops.S);
-            space.constraints.distribute_local_to_global(cell_st, dofs_s, dofs_f, ops.S_transpose);
+            coupling.integrate(pair);
+            transposed.copy_transposed(coupling.matrix);
+            space.constraints.distribute_local_to_global(coupling.matrix, coupling.dofs_f,
+                                                         coupling.dofs_s, ops.S);
+            space.constraints.distribute_local_to_global(transposed, coupling.dofs_s,
+                                                         coupling.dofs_f, ops.S_transpose);
             for (unsigned int d = 0; d < dim; ++d)
-              space.constraints.distribute_local_to_global(cell_influence[d], dofs_f,
-                                                           ops.influence[d]);
+              space.constraints.distribute_local_to_global(coupling.influence[d],
+                                                           coupling.dofs_f, ops.influence[d]);
           }
     }
   } // namespace
@@ -323,6 +363,58 @@ namespace archdam::physics::reservoir
       m->compress(VectorOperation::add);
     for (auto &v : ops.influence)
       v.compress(VectorOperation::add);
+  }
+
+  void
+  assemble_coupling_columns(const fe::FESpace                          &space,
+                            const double                                density,
+                            const std::vector<InterfacePair>           &pairs,
+                            const std::vector<types::global_dof_index> &columns,
+                            SparseMatrix                               &S_columns)
+  {
+    std::vector<bool> is_column(space.dof_handler.n_dofs(), false);
+    for (const auto i : columns)
+      is_column[i] = true;
+    // The model's constraints without the lines of the columns themselves
+    // (the rows keep the model's: p = 0 on the free surface).
+    AffineConstraints<double> others(space.locally_relevant);
+    for (const auto &line : space.constraints.get_lines())
+      if (!is_column[line.index])
+        {
+          others.add_line(line.index);
+          others.add_entries(line.index, line.entries);
+          others.set_inhomogeneity(line.index, line.inhomogeneity);
+        }
+    others.close();
+    const auto touches = [&](const InterfacePair &pair, std::vector<types::global_dof_index> &dofs) {
+      dofs.resize(pair.solid_cell->get_fe().n_dofs_per_cell());
+      pair.solid_cell->get_dof_indices(dofs);
+      return pair.fluid_cell->is_locally_owned() &&
+             std::any_of(dofs.begin(), dofs.end(), [&](const auto i) { return is_column[i]; });
+    };
+
+    DynamicSparsityPattern               dsp(space.locally_relevant);
+    std::vector<types::global_dof_index> dofs_f, dofs_s;
+    for (const auto &pair : pairs)
+      if (touches(pair, dofs_s))
+        {
+          dofs_f.resize(pair.fluid_cell->get_fe().n_dofs_per_cell());
+          pair.fluid_cell->get_dof_indices(dofs_f);
+          space.constraints.add_entries_local_to_global(dofs_f, others, dofs_s, dsp, false);
+        }
+    SparsityTools::distribute_sparsity_pattern(dsp, space.locally_owned, space.comm,
+                                               space.locally_relevant);
+    S_columns.reinit(space.locally_owned, space.locally_owned, dsp, space.comm);
+
+    PairCoupling coupling(space, density);
+    for (const auto &pair : pairs)
+      if (touches(pair, dofs_s))
+        {
+          coupling.integrate(pair);
+          space.constraints.distribute_local_to_global(coupling.matrix, coupling.dofs_f, others,
+                                                       coupling.dofs_s, S_columns);
+        }
+    S_columns.compress(VectorOperation::add);
   }
 
   IndexSet

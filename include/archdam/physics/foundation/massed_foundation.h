@@ -62,6 +62,16 @@ namespace archdam::physics::foundation
       return update_seconds;
     }
 
+    /// The prescribed outer boundary (MTF and fixed boundary; nullptr for the
+    /// viscous one), whose columns hold the solid's M and K: the coupled
+    /// dam-water system extends them to its own
+    /// (reservoir::form_coupled_columns) before the first step.
+    time::PrescribedDofs *
+    prescribed_dofs()
+    {
+      return mtf ? &prescribed : nullptr;
+    }
+
     const MultiTransmittingBoundary *
     transmitting_boundary() const
     {

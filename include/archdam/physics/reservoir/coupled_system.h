@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/physics/reservoir/fluid_operators.h>
+#include <archdam/time/newmark.h>
 
 #include <initializer_list>
 #include <utility>
@@ -39,4 +40,25 @@ namespace archdam::physics::reservoir
                       const SparseMatrix        &K,
                       std::pair<double, double>  rayleigh,
                       CoupledSystem             &system);
+
+  /**
+   * The columns of the coupled system at the prescribed solid DOFs of a
+   * massed foundation's outer boundary (numerics.md §5, time::PrescribedDofs).
+   * On entry @p prescribed holds the DOFs and the columns of the solid's M
+   * and K there (solid::assemble_mass_and_stiffness_columns); on exit the
+   * columns of M_c, D_c and K_c above:
+   *   M_c(:, b) = [M(:, b); Phi S(:, b)],  D_c(:, b) = [alpha M(:, b) + beta K(:, b); 0],
+   *   K_c(:, b) = [K(:, b); 0]
+   * (the water's own blocks and -(1/rho_w) S^T have no solid columns). The
+   * fluid rows Phi S(:, b) carry the boundary's acceleration into the water
+   * where the wetted rock meets the outer boundary.
+   */
+  void
+  form_coupled_columns(const fe::FESpace                &space,
+                       const std::vector<InterfacePair> &pairs,
+                       double                            density,
+                       double                            beta2,
+                       double                            dt,
+                       std::pair<double, double>         rayleigh,
+                       time::PrescribedDofs             &prescribed);
 } // namespace archdam::physics::reservoir

@@ -71,6 +71,22 @@ namespace archdam::physics::reservoir
                            const std::vector<InterfacePair> &pairs,
                            FluidOperators                   &ops);
 
+  /**
+   * The columns of S at the solid DOFs @p columns (e.g. the prescribed outer
+   * boundary of a massed foundation, numerics.md §5), which the constrained
+   * S of FluidOperators drops: the coupling of every interface pair that
+   * touches them, with the model's constraints on the fluid rows and on the
+   * other columns, but not on @p columns. The pairs of other columns may add
+   * entries there too; a product with a vector that vanishes off @p columns
+   * gives S(:, columns) times its entries there.
+   */
+  void
+  assemble_coupling_columns(const fe::FESpace                                  &space,
+                            double                                              density,
+                            const std::vector<InterfacePair>                   &pairs,
+                            const std::vector<dealii::types::global_dof_index> &columns,
+                            SparseMatrix                                       &S_columns);
+
   /// The DOFs of the pressure that are free (not constrained), locally owned.
   dealii::IndexSet
   free_pressure_dofs(const fe::FESpace &space);
