@@ -131,11 +131,8 @@ main(int argc, char **argv)
   run("a Gmsh mesh of tetrahedra", {"good.prm", "--set", "Mesh/Source=gmsh", "--set",
                                     "Mesh/Gmsh/File=tetrahedron.msh"});
 
-  // Combinations the program does not support, points outside their region
+  // Points outside their region
   const std::string blocks = "Mesh/Gmsh/File=" SOURCE_DIR "/../prm/gmsh_blocks_v4.msh";
-  run("a massed foundation with compressible water",
-      {"good.prm", "--set", "Mesh/Source=gmsh", "--set", blocks, "--set",
-       "Reservoir/Model=compressible", "--set", "Foundation/Model=massed"});
   run("a pressure point outside the water",
       {"good.prm", "--set", "Mesh/Source=gmsh", "--set", blocks, "--set",
        "Reservoir/Model=compressible", "--set", "Reservoir/Pressure points=dry: 5, 5, 5"});
