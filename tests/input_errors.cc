@@ -110,6 +110,8 @@ main(int argc, char **argv)
 
   // Command line
   run("two case files", {"good.prm", "good.prm"});
+  write("includes_missing.prm", "include no_such_case.prm\n");
+  run("a case file that includes a file that does not exist", {"includes_missing.prm"});
   run("--print-parameters with two formats", {"--print-parameters", "json", "xml"});
   run("--print-parameters with an unknown format", {"--print-parameters", "yaml"});
 

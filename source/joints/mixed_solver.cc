@@ -11,11 +11,6 @@ namespace archdam::joints
 {
   using namespace dealii;
 
-  namespace
-  {
-
-  } // namespace
-
   std::vector<double>
   flexibility_matrix(const NodePairs &pairs, const time::FactorizedOperator &A_factor,
                      const Vector &layout, const unsigned int block_size,

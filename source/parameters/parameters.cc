@@ -109,6 +109,31 @@ namespace archdam
       if (p.analysis.stages.empty())
         throw InputError("Analysis/Stages: nothing to run.");
     }
+
+    /// A case file may start from another one: `include other.prm` reads that
+    /// file's entries first (later entries override them). deal.II opens the
+    /// named file relative to the working directory; a case file means its own
+    /// folder, so relative names are rewritten to start there (the line count
+    /// stays the same, so messages keep their line numbers).
+    std::stringstream
+    with_includes_resolved(std::istream &in, const std::string &directory)
+    {
+      std::stringstream out;
+      std::string       line;
+      while (std::getline(in, line))
+        {
+          const auto first = line.find_first_not_of(" \t");
+          if (first != std::string::npos && line.compare(first, 8, "include ") == 0)
+            {
+              const auto        name_begin = line.find_first_not_of(" \t", first + 8);
+              const std::string name = name_begin == std::string::npos ? "" : line.substr(name_begin);
+              if (!name.empty() && name[0] != '/')
+                line = "include " + directory + "/" + name;
+            }
+          out << line << '\n';
+        }
+      return out;
+    }
   } // namespace
 
   Parameters
@@ -118,12 +143,16 @@ namespace archdam
     if (!in)
       throw InputError("Cannot open the parameter file '" + filename + "'.");
 
+    const auto        slash     = filename.find_last_of('/');
+    const std::string directory = slash == std::string::npos ? "." : filename.substr(0, slash);
+    std::stringstream text = with_includes_resolved(in, directory);
+
     Parameters       p;
     ParameterHandler prm;
     p.add_parameters(prm);
     try
       {
-        prm.parse_input(in, filename, "", false);
+        prm.parse_input(text, filename, "", false);
       }
     catch (const ExceptionBase &e)
       {
@@ -132,8 +161,7 @@ namespace archdam
     for (const auto &o : overrides)
       apply_override(prm, o);
 
-    const auto slash = filename.find_last_of('/');
-    p.base_directory = slash == std::string::npos ? "." : filename.substr(0, slash);
+    p.base_directory = directory;
     if (p.analysis.case_name.empty())
       {
         const std::string base = filename.substr(slash == std::string::npos ? 0 : slash + 1);

@@ -127,7 +127,9 @@ namespace archdam::time
           m << " (not a finite number)";
         m << ". The results up to t = " << s.time - dt
           << " s are written. Check the ground motion (an absurd sample), the time step, "
-             "and with a massed foundation the transmitting boundary (c_a dt / h <= 1).";
+             "with a massed foundation the transmitting boundary (c_a dt / h <= 1), and "
+             "with frictional joints the Newmark parameters (Beta1 > 0.5 damps the "
+             "contact chatter that the average acceleration rule lets grow).";
         message = m.str();
       }
     message = Utilities::MPI::broadcast(space.comm, message, worst.rank);

@@ -1,0 +1,247 @@
+#!/usr/bin/python3
+"""Run the reference case and its variants, and draw the paper's figures.
+
+The reference case is prm/paper_235m_dam.prm; each variant
+(prm/paper_235m_dam_<variant>.prm) includes it and changes one thing. This
+script runs the cases asked for (a case whose summary.json exists is not run
+again unless --rerun), then draws from whatever results exist:
+
+  opening_A_B.png          joint opening at A and B over time (paper's points)
+  stress_C_joints.png      major principal stress at C with and without joints
+  max_opening_water.png    maximum opening of each joint along the dam axis,
+                           compressible / incompressible / Westergaard water
+  crest_displacement.png   stream displacement of the crest, every case run
+  opening_envelopes.png    per joint, the maximum opening over the height
+  comparison.csv           one row per case: the peaks the figures show
+
+Usage (from the project root):
+  /usr/bin/python3 scripts/compare-paper-variants.py [--run all|CASE,...|none]
+      [--mesh default|coarse] [--end-time S] [--results DIR] [--figures DIR]
+      [--archdam build/archdam] [--rerun]
+
+--mesh coarse runs every case on a coarse linear mesh (1 cell across a block
+and through the thickness, 4 over the height): a quick look, not the
+production mesh of performance.md. The results go to DIR/<case>[_coarse].
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+CASES = ["reference", "glued", "incompressible", "westergaard", "massless", "pacoima"]
+LABELS = {
+    "reference": "reference (compressible, joints, massed rock)",
+    "glued": "joints glued",
+    "incompressible": "incompressible water",
+    "westergaard": "Westergaard added mass",
+    "massless": "massless foundation",
+    "pacoima": "Pacoima record",
+}
+COARSE = [
+    "Finite element/Degree=1",
+    "Mesh/Arch dam/Cells across each block=1",
+    "Mesh/Arch dam/Cells through thickness=1",
+    "Mesh/Arch dam/Cells over height=4",
+]
+
+
+def prm_file(case):
+    return "prm/paper_235m_dam.prm" if case == "reference" else f"prm/paper_235m_dam_{case}.prm"
+
+
+def result_dir(args, case):
+    name = "paper_235m_dam" if case == "reference" else f"paper_235m_dam_{case}"
+    return os.path.join(args.results, name + ("_coarse" if args.mesh == "coarse" else ""))
+
+
+def run(args, case):
+    out = result_dir(args, case)
+    if os.path.exists(os.path.join(out, "summary.json")) and not args.rerun:
+        print(f"{case}: results in {out} (kept; --rerun to run again)")
+        return
+    command = [args.archdam, prm_file(case), "--set", f"Output/Directory={out}"]
+    for s in (COARSE if args.mesh == "coarse" else []) + (
+        [f"Time integration/End time={args.end_time}"] if args.end_time else []
+    ):
+        command += ["--set", s]
+    print(f"{case}: running", " ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
+    os.makedirs(out, exist_ok=True)
+    with open(os.path.join(out, "run.log"), "w") as log:
+        status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
+    if status != 0:
+        sys.exit(f"{case}: archdam failed with exit code {status}; see {out}/run.log")
+
+
+def read_csv(path):
+    """Columns of a CSV file as lists of floats, keyed by header."""
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    return {h: [float(r[i]) for r in body] for i, h in enumerate(header)}
+
+
+def load(args, case):
+    """The results of a case, or None if it has not been run."""
+    d = result_dir(args, case)
+    if not os.path.exists(os.path.join(d, "summary.json")):
+        return None
+    r = {"dir": d, "summary": json.load(open(os.path.join(d, "summary.json")))}
+    for key, name in [
+        ("histories", "histories.csv"),
+        ("joints", "joint_histories_dynamic.csv"),
+        ("crest", "joint_crest_dynamic.csv"),
+        ("envelopes", "joint_envelopes_dynamic.csv"),
+    ]:
+        path = os.path.join(d, name)
+        r[key] = read_csv(path) if os.path.exists(path) else None
+    return r
+
+
+def crest_deformation(r):
+    """Crest minus base stream displacement (on massed rock the monitors move
+    with the ground), from the static state."""
+    h = r["histories"]
+    base = h.get("base.ux [m]", [0.0] * len(h["crest.ux [m]"]))
+    d = [c - b for c, b in zip(h["crest.ux [m]"], base)]
+    return [v - d[0] for v in d]
+
+
+def peak(values):
+    return max(values, key=abs) if values else float("nan")
+
+
+def figure(path, draw, title, xlabel, ylabel):
+    fig, ax = plt.subplots(figsize=(8, 4.5))
+    draw(ax)
+    ax.set_title(title)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.grid(True, alpha=0.3)
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    print("wrote", path)
+
+
+def draw_all(args, results):
+    os.makedirs(args.figures, exist_ok=True)
+    ref = results.get("reference")
+    if ref and ref["joints"]:
+        j = ref["joints"]
+
+        def openings(ax):
+            for point in ["A", "B"]:
+                key = f"{point}.opening [m]"
+                if key in j:
+                    ax.plot(j["time [s]"], [1e3 * v for v in j[key]], label=f"{point}")
+
+        figure(os.path.join(args.figures, "opening_A_B.png"), openings,
+               "Joint opening at A (crown joint) and B (quarter-span joint), crest",
+               "time [s]", "opening [mm]")
+
+    with_c = [c for c in ["reference", "glued"] if results.get(c) and "C.s1 [Pa]" in results[c]["histories"]]
+    if with_c:
+        def stress(ax):
+            for c in with_c:
+                h = results[c]["histories"]
+                ax.plot(h["time [s]"], [v / 1e6 for v in h["C.s1 [Pa]"]],
+                        label="with joints" if c == "reference" else "joints glued")
+
+        figure(os.path.join(args.figures, "stress_C_joints.png"), stress,
+               "Major principal stress at C (crown block, downstream face near the crest)",
+               "time [s]", "major principal stress [MPa] (tension > 0)")
+
+    water = [c for c in ["reference", "incompressible", "westergaard"] if results.get(c) and results[c]["crest"]]
+    if water:
+        def along_axis(ax):
+            for c in water:
+                crest = results[c]["crest"]
+                ax.plot(crest["joint"], [1e3 * v for v in crest["max opening [m]"]], "o-",
+                        label={"reference": "compressible", "incompressible": "incompressible",
+                               "westergaard": "Westergaard"}[c])
+            ax.set_xticks(range(13))
+
+        figure(os.path.join(args.figures, "max_opening_water.png"), along_axis,
+               "Maximum joint opening at the crest along the dam axis",
+               "joint (0 = left bank)", "maximum opening [mm]")
+
+    crest_cases = [c for c in CASES if results.get(c) and "crest.ux [m]" in results[c]["histories"]]
+    if crest_cases:
+        def crest(ax):
+            for c in crest_cases:
+                ax.plot(results[c]["histories"]["time [s]"], [1e3 * v for v in crest_deformation(results[c])],
+                        label=LABELS[c], lw=0.8)
+
+        figure(os.path.join(args.figures, "crest_displacement.png"), crest,
+               "Stream displacement of the crest relative to the dam base, from the static state",
+               "time [s]", "displacement [mm]")
+
+    if ref and ref["envelopes"]:
+        def envelopes(ax):
+            e = ref["envelopes"]
+            for k in sorted(set(int(v) for v in e["joint"])):
+                rows = [i for i, v in enumerate(e["joint"]) if int(v) == k]
+                ax.plot([1e3 * e["max opening [m]"][i] for i in rows], [e["z [m]"][i] for i in rows],
+                        label=f"joint {k}")
+
+        figure(os.path.join(args.figures, "opening_envelopes.png"), envelopes,
+               "Maximum opening over the height of each joint (reference case)",
+               "maximum opening [mm]", "elevation z [m]")
+
+    path = os.path.join(args.figures, "comparison.csv")
+    with open(path, "w") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "peak opening A [m]", "peak opening B [m]", "largest crest opening [m]",
+                    "joint", "peak s1 at C [Pa]", "peak crest ux relative to the base [m]"])
+        for c in CASES:
+            r = results.get(c)
+            if not r:
+                continue
+            j, h, crest = r["joints"], r["histories"], r["crest"]
+            largest = max(range(len(crest["joint"])), key=lambda i: crest["max opening [m]"][i]) if crest else None
+            w.writerow([
+                c,
+                max(j["A.opening [m]"]) if j else "",
+                max(j["B.opening [m]"]) if j else "",
+                crest["max opening [m]"][largest] if crest else "",
+                int(crest["joint"][largest]) if crest else "",
+                max(h["C.s1 [Pa]"]),
+                peak(crest_deformation(r)),
+            ])
+    print("wrote", path)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--run", default="all", help="all, none, or a comma-separated list of " + ", ".join(CASES))
+    p.add_argument("--mesh", choices=["default", "coarse"], default="default")
+    p.add_argument("--end-time", type=float, default=0, help="override the cases' end time [s]")
+    p.add_argument("--results", default="results")
+    p.add_argument("--figures", default=None, help="default: RESULTS/figures[_coarse]")
+    p.add_argument("--archdam", default="build/archdam")
+    p.add_argument("--rerun", action="store_true")
+    args = p.parse_args()
+    if args.figures is None:
+        args.figures = os.path.join(args.results, "figures" + ("_coarse" if args.mesh == "coarse" else ""))
+    runs = {"all": CASES, "none": []}.get(args.run, args.run.split(","))
+    for c in runs:
+        if c not in CASES:
+            sys.exit(f"--run: unknown case '{c}' (known: {', '.join(CASES)})")
+        run(args, c)
+    results = {c: load(args, c) for c in CASES}
+    if not any(results.values()):
+        sys.exit(f"no results under {args.results} for --mesh {args.mesh}: run some cases first")
+    draw_all(args, results)
+
+
+if __name__ == "__main__":
+    main()
