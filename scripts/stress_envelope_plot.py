@@ -25,6 +25,7 @@ import csv
 import math
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -58,12 +59,15 @@ def draw(csv_path, png_path, title, radius=None):
         raise SystemExit(f"{csv_path}: no upstream or downstream points")
     low, high = min(values), max(values)
     norm = TwoSlopeNorm(0.0, min(low, -1e-6), max(high, 1e-6))
+    levels = np.linspace(low, high, 22) if high > low else np.linspace(low - 1, high + 1, 3)
 
-    fig, axes = plt.subplots(1, 2, figsize=(13, 5.5), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+    z_all = [p[2] for face, _ in panels for p in faces.get(face, [])]
     mappable = None
     for ax, (face, label) in zip(axes, panels):
         points = faces.get(face, [])
         ax.set_title(label, fontsize=10)
+        ax.set_ylim(min(z_all), max(z_all))
         ax.set_xlabel("y [m]" if radius is None else f"arc position at R = {radius:g} m [m]")
         if len(points) < 3:
             ax.text(0.5, 0.5, "no points", transform=ax.transAxes, ha="center")
@@ -81,17 +85,18 @@ def draw(csv_path, png_path, title, radius=None):
         edges = sorted(e for t in triangles.triangles for e in lengths(t))
         limit = 3 * edges[len(edges) // 2]
         triangles.set_mask([max(lengths(t)) > limit for t in triangles.triangles])
-        mappable = ax.tricontourf(triangles, s1, levels=21, cmap="RdBu_r", norm=norm)
+        mappable = ax.tricontourf(triangles, s1, levels=levels, cmap="RdBu_r", norm=norm)
         k = max(range(len(points)), key=lambda i: s1[i])
-        ax.plot([h[k]], [z[k]], "k*", markersize=10)
-        ax.annotate(f"{s1[k]:.2f} MPa at t = {points[k][4]:.2f} s", (h[k], z[k]),
-                    textcoords="offset points", xytext=(6, 6), fontsize=8)
-        ax.set_aspect("equal", adjustable="datalim")
+        ax.plot([h[k]], [z[k]], "k*", markersize=10, clip_on=False)
+        ax.set_title(f"{label}\n(*) largest: {s1[k]:.2f} MPa at t = {points[k][4]:.2f} s, "
+                     f"y = {points[k][1]:.0f} m, z = {points[k][2]:.0f} m", fontsize=10)
+        ax.set_aspect("equal", adjustable="box")
         if face == "upstream":
             ax.invert_xaxis()  # looking downstream, +y is on the left
-    axes[0].set_ylabel("z [m]")
+    for ax in axes:
+        ax.set_ylabel("z [m]")
     if mappable is not None:
-        fig.colorbar(mappable, ax=axes, shrink=0.85,
+        fig.colorbar(mappable, ax=axes, shrink=0.85, format="%.1f",
                      label="largest major principal stress s1 [MPa] (tension +)")
     fig.suptitle(title)
     fig.savefig(png_path, dpi=120)
