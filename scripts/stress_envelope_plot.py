@@ -88,7 +88,7 @@ def draw(csv_path, png_path, title, radius=None):
         mappable = ax.tricontourf(triangles, s1, levels=levels, cmap="RdBu_r", norm=norm)
         k = max(range(len(points)), key=lambda i: s1[i])
         ax.plot([h[k]], [z[k]], "k*", markersize=10, clip_on=False)
-        ax.set_title(f"{label}\n(*) largest: {s1[k]:.2f} MPa at t = {points[k][4]:.2f} s, "
+        ax.set_title(f"{label}\n(*) largest: {s1[k]:.3g} MPa at t = {points[k][4]:.2f} s, "
                      f"y = {points[k][1]:.0f} m, z = {points[k][2]:.0f} m", fontsize=10)
         ax.set_aspect("equal", adjustable="box")
         if face == "upstream":
@@ -96,7 +96,7 @@ def draw(csv_path, png_path, title, radius=None):
     for ax in axes:
         ax.set_ylabel("z [m]")
     if mappable is not None:
-        fig.colorbar(mappable, ax=axes, shrink=0.85, format="%.1f",
+        fig.colorbar(mappable, ax=axes, shrink=0.85, format="%.3g",
                      label="largest major principal stress s1 [MPa] (tension +)")
     fig.suptitle(title)
     fig.savefig(png_path, dpi=120)

@@ -23,7 +23,9 @@ namespace archdam::output
    * The stress envelope on the dam faces (numerics.md §7): at every point of
    * the dam's surface, the largest major principal stress s1 and the smallest
    * (most compressive) minor principal stress s3 over the dynamic stage, with
-   * the time of each.
+   * the time of each. The stage's initial state (t = 0, the static state when
+   * the static stage ran) counts, as it does for the monitor histories; a tie
+   * keeps the earlier time.
    *
    * The points are the face quadrature points (QGauss(degree + 1), the rule of
    * the surface loads) of the dam cells' faces that carry boundary id 0 (free
