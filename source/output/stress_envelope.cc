@@ -4,9 +4,11 @@
 #include <archdam/output/stress_envelope.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/qprojector.h>
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <memory>
 #include <iomanip>
 #include <tuple>
 
@@ -61,47 +63,72 @@ namespace archdam::output
   StressEnvelope::StressEnvelope(const fe::FESpace                        &space,
                                  const physics::solid::MaterialParameters &materials)
     : space(space)
-    , materials(materials)
   {
     const auto &fe = space.fe_collection[fe::FESpace::solid_index];
     const auto &q  = space.face_q_collection[fe::FESpace::solid_index];
-    FEFaceValues<dim> geometry(fe, q, update_quadrature_points | update_normal_vectors);
+    for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+      component.push_back(fe.system_to_component_index(i).first);
+    // Per face number: the face's points on the unit cell, the shape
+    // gradients there, and an FEValues that maps them onto a cell.
+    std::vector<std::unique_ptr<FEValues<dim>>> at_face;
+    for (const unsigned int f : GeometryInfo<dim>::face_indices())
+      {
+        const Quadrature<dim> points =
+          QProjector<dim>::project_to_face(ReferenceCells::Hexahedron, q, f);
+        at_face.push_back(std::make_unique<FEValues<dim>>(
+          fe, points, update_quadrature_points | update_inverse_jacobians));
+        unit_gradients[f].resize(points.size());
+        for (unsigned int k = 0; k < points.size(); ++k)
+          for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+            unit_gradients[f][k].push_back(fe.shape_grad(i, points.point(k)));
+      }
+    FEFaceValues<dim> normals(fe, q, update_normal_vectors);
+
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && ids::is_dam(cell->material_id()))
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() && on_dam_surface(cell->face(f)->boundary_id()))
             {
-              geometry.reinit(cell, f);
+              normals.reinit(cell, f);
               Tensor<1, dim> mean_normal;
-              for (const unsigned int k : geometry.quadrature_point_indices())
-                mean_normal += geometry.normal_vector(k);
+              for (const unsigned int k : normals.quadrature_point_indices())
+                mean_normal += normals.normal_vector(k);
               const Part part = part_of(mean_normal / mean_normal.norm());
-              faces.push_back({cell, f, static_cast<unsigned int>(entries.size())});
-              for (const unsigned int k : geometry.quadrature_point_indices())
-                entries.push_back({part, geometry.quadrature_point(k)});
+
+              Face face{std::vector<types::global_dof_index>(fe.dofs_per_cell),
+                        materials.of(cell->material_id()), f,
+                        static_cast<unsigned int>(entries.size())};
+              cell->get_dof_indices(face.dofs);
+              faces.push_back(face);
+              at_face[f]->reinit(cell);
+              for (const unsigned int k : at_face[f]->quadrature_point_indices())
+                {
+                  entries.push_back({part, at_face[f]->quadrature_point(k)});
+                  inverse_jacobians.push_back(Tensor<2, dim>(at_face[f]->inverse_jacobian(k)));
+                }
             }
-    face_values = std::make_unique<FEFaceValues<dim>>(fe, q, update_gradients);
     space.reinit_ghosted(ghosted_u);
   }
-
-  StressEnvelope::~StressEnvelope() = default;
 
   void
   StressEnvelope::update(const Vector &u, const double t)
   {
     ghosted_u = u;
-    std::vector<Tensor<2, dim>> gradients(face_values->n_quadrature_points);
+    std::vector<double> values(component.size());
     for (const Face &face : faces)
       {
-        face_values->reinit(face.cell, face.face_no);
-        (*face_values)[space.displacement].get_function_gradients(ghosted_u, gradients);
-        const auto &material = materials.of(face.cell->material_id());
+        ghosted_u.extract_subvector_to(face.dofs.begin(), face.dofs.end(), values.begin());
+        const auto &gradients = unit_gradients[face.face_no];
         for (unsigned int k = 0; k < gradients.size(); ++k)
           {
-            // Hooke's law and the principal stresses (numerics.md §1).
-            const auto [s1, s3] =
-              physics::solid::principal_stresses(material.stress(symmetrize(gradients[k])));
+            // grad u = (sum_i u_i grad_unit phi_i) J^-1: row c is component c.
+            Tensor<2, dim> unit_gradient;
+            for (unsigned int i = 0; i < values.size(); ++i)
+              unit_gradient[component[i]] += values[i] * gradients[k][i];
             Entry &e = entries[face.first_entry + k];
+            // Hooke's law and the principal stresses (numerics.md §1).
+            const auto [s1, s3] = physics::solid::principal_stresses(face.material.stress(
+              symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k])));
             if (!started || s1 > e.max_s1)
               {
                 e.max_s1      = s1;

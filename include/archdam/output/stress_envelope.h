@@ -5,15 +5,9 @@
 #include <archdam/physics/solid/materials.h>
 
 #include <deal.II/base/point.h>
-#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/base/tensor.h>
 
-namespace dealii
-{
-  template <int dim, int spacedim>
-  class FEFaceValues;
-}
-
-#include <memory>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -44,8 +38,13 @@ namespace archdam::output
    *                free ends of a box model; an arch dam has none).
    *
    * The stress is Hooke's law of the displacement gradient, as for the
-   * fields (physics/solid/stress.h). Each rank updates the points of the
-   * faces of its own cells; the results are gathered at the end.
+   * fields (physics/solid/stress.h). The geometry is fixed, so what the
+   * gradient needs besides the DOF values is computed once: at each point the
+   * inverse Jacobian of the cell map, and the shape gradients on the unit
+   * cell (the same for every face with the same face number). An update is
+   * then grad u = (sum_i u_i grad_unit phi_i) J^-1, a few multiply-adds per
+   * DOF. Each rank updates the points of the faces of its own cells; the
+   * results are gathered at the end.
    */
   class StressEnvelope
   {
@@ -69,7 +68,6 @@ namespace archdam::output
     };
 
     StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials);
-    ~StressEnvelope();
 
     /// Take the state @p u (a distributed vector) at time @p t into the
     /// envelope. Collective (ghost exchange).
@@ -92,17 +90,22 @@ namespace archdam::output
   private:
     struct Face
     {
-      dealii::DoFHandler<dim>::active_cell_iterator cell;
-      unsigned int                                  face_no;
-      unsigned int                                  first_entry;
+      std::vector<dealii::types::global_dof_index> dofs;
+      physics::solid::ElasticMaterial              material;
+      unsigned int                                 face_no;
+      unsigned int                                 first_entry;
     };
 
-    const fe::FESpace                        &space;
-    const physics::solid::MaterialParameters &materials;
-    std::vector<Face>                         faces;
-    std::vector<Entry>                        entries; // this rank's points
-    Vector                                    ghosted_u;
-    std::unique_ptr<dealii::FEFaceValues<dim, dim>> face_values;
-    bool                                      started = false;
+    const fe::FESpace        &space;
+    std::vector<Face>         faces;
+    std::vector<Entry>        entries; // this rank's points
+    /// d(unit coordinates)/dx at each entry's point.
+    std::vector<dealii::Tensor<2, dim>> inverse_jacobians;
+    /// Unit-cell shape gradients [face number][point][local DOF], and the
+    /// displacement component of each local DOF.
+    std::array<std::vector<std::vector<dealii::Tensor<1, dim>>>, 6> unit_gradients;
+    std::vector<unsigned int> component;
+    Vector                    ghosted_u;
+    bool                      started = false;
   };
 } // namespace archdam::output
