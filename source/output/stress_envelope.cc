@@ -8,8 +8,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
-#include <memory>
 #include <iomanip>
+#include <memory>
 #include <tuple>
 
 namespace archdam::output
