@@ -30,7 +30,8 @@ namespace archdam::analysis
   /**
    * Dynamic stage (numerics.md §2 and §6, step 3): the generalized Newmark
    * scheme from the static state at rest, under F(t) = F_static - M iota a_g(t),
-   * recording the monitors every step and the fields every few steps.
+   * recording the monitors and the stress envelope on the dam faces every
+   * step and the fields every few steps.
    */
   void
   Simulation::run_dynamic_stage()
@@ -88,6 +89,8 @@ namespace archdam::analysis
     history->append(monitor->evaluate(current));
     if (pressure)
       pressure->record(current);
+    stress_envelope = std::make_unique<output::StressEnvelope>(*fe_space, p.materials);
+    stress_envelope->update(current.u, current.time);
     if (massed_foundation)
       massed_foundation->start(current.u);
 
@@ -129,6 +132,7 @@ namespace archdam::analysis
             history->finish();
             if (pressure)
               pressure->finish();
+            stress_envelope->write(p.output.directory, summary);
             summary.set("stopped/reason", stop.what());
             summary.set("stopped/step", stop.step);
             summary.set("stopped/time [s]", stop.time);
@@ -143,6 +147,10 @@ namespace archdam::analysis
             pressure->record(current);
           if (joint_output)
             joint_output->record(current.time, *joint_solver);
+        }
+        {
+          TimerOutput::Scope t(timer, "dynamic: stress envelope");
+          stress_envelope->update(current.u, current.time);
         }
         if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
           {
@@ -162,6 +170,7 @@ namespace archdam::analysis
     history->finish();
     if (pressure)
       pressure->finish();
+    stress_envelope->write(p.output.directory, summary);
 
     summary.set("dynamic/time step [s]", dt);
     summary.set("dynamic/steps", n_steps);

@@ -10,6 +10,7 @@
 #include <archdam/output/histories.h>
 #include <archdam/output/monitors.h>
 #include <archdam/output/pressure_recorder.h>
+#include <archdam/output/stress_envelope.h>
 #include <archdam/output/summary.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/physics/reservoir/coupled_system.h>
@@ -204,6 +205,8 @@ namespace archdam::analysis
     std::unique_ptr<output::HistoryWriter>   history;
     std::unique_ptr<output::PressureRecorder> pressure;
     std::unique_ptr<output::FieldWriter>     fields;
+    /// Extreme principal stresses on the dam faces over the dynamic stage.
+    std::unique_ptr<output::StressEnvelope>  stress_envelope;
     physics::solid::PeakStress               peak_stress{-1e300, {}};
     double                                   peak_stress_time = 0.;
     output::Summary                          summary;

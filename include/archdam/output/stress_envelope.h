@@ -1,0 +1,111 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/output/summary.h>
+#include <archdam/physics/solid/materials.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace archdam::output
+{
+  /**
+   * The stress envelope on the dam faces (numerics.md §7): at every point of
+   * the dam's surface, the largest major principal stress s1 and the smallest
+   * (most compressive) minor principal stress s3 over the dynamic stage, with
+   * the time of each. The stage's initial state (t = 0, the static state when
+   * the static stage ran) counts, as it does for the monitor histories; a tie
+   * keeps the earlier time.
+   *
+   * The points are the face quadrature points (QGauss(degree + 1), the rule of
+   * the surface loads) of the dam cells' faces that carry boundary id 0 (free
+   * surface) or 7 (wetted face, architecture.md §3): inside a face, so each
+   * point belongs to exactly one dam cell and its stress has one value. Joint
+   * faces (ids 100 + 2k, 101 + 2k from the splitter), the dam-rock interface
+   * (an interior face) and a truncated base (ids 1, 2) are never taken.
+   *
+   * Each face belongs to one part of the surface, from the outward normal n
+   * averaged over the face (axes of architecture.md §3):
+   *  - crest:      n_z is the largest component (the normal within about 45
+   *                degrees of the vertical);
+   *  - upstream:   otherwise, n_x <= -0.1;
+   *  - downstream: otherwise, n_x >= 0.1;
+   *  - side:       the rest, faces that look across the stream or down (the
+   *                free ends of a box model; an arch dam has none).
+   *
+   * The stress is Hooke's law of the displacement gradient, as for the
+   * fields (physics/solid/stress.h). The geometry is fixed, so what the
+   * gradient needs besides the DOF values is computed once: at each point the
+   * inverse Jacobian of the cell map, and the shape gradients on the unit
+   * cell (the same for every face with the same face number). An update is
+   * then grad u = (sum_i u_i grad_unit phi_i) J^-1, a few multiply-adds per
+   * DOF. Each rank updates the points of the faces of its own cells; the
+   * results are gathered at the end.
+   */
+  class StressEnvelope
+  {
+  public:
+    enum class Part
+    {
+      upstream,
+      downstream,
+      crest,
+      side
+    };
+    static std::string
+    name(Part part);
+
+    struct Entry
+    {
+      Part               part;
+      dealii::Point<dim> where;
+      double             max_s1 = 0., time_max_s1 = 0.;
+      double             min_s3 = 0., time_min_s3 = 0.;
+    };
+
+    StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials);
+
+    /// Take the state @p u (a distributed vector) at time @p t into the
+    /// envelope. Collective (ghost exchange).
+    void
+    update(const Vector &u, double t);
+
+    /// Every rank's entries on every rank, ordered by part, then z, y, x (the
+    /// same order for any number of ranks). Collective.
+    std::vector<Entry>
+    gather() const;
+
+    /**
+     * Write `stress_envelope_dynamic.csv` in @p directory (rank 0, atomically)
+     * and the extremes of each part into @p summary under "stress envelope/".
+     * Collective.
+     */
+    void
+    write(const std::string &directory, Summary &summary) const;
+
+  private:
+    struct Face
+    {
+      std::vector<dealii::types::global_dof_index> dofs;
+      physics::solid::ElasticMaterial              material;
+      unsigned int                                 face_no;
+      unsigned int                                 first_entry;
+    };
+
+    const fe::FESpace        &space;
+    std::vector<Face>         faces;
+    std::vector<Entry>        entries; // this rank's points
+    /// d(unit coordinates)/dx at each entry's point.
+    std::vector<dealii::Tensor<2, dim>> inverse_jacobians;
+    /// Unit-cell shape gradients [face number][point][local DOF], and the
+    /// displacement component of each local DOF.
+    std::array<std::vector<std::vector<dealii::Tensor<1, dim>>>, 6> unit_gradients;
+    std::vector<unsigned int> component;
+    Vector                    ghosted_u;
+    bool                      started = false;
+  };
+} // namespace archdam::output

@@ -1,0 +1,218 @@
+#include <archdam/base/on_rank_zero.h>
+#include <archdam/geometry/ids.h>
+#include <archdam/output/atomic_file.h>
+#include <archdam/output/stress_envelope.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/qprojector.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <algorithm>
+#include <iomanip>
+#include <memory>
+#include <tuple>
+
+namespace archdam::output
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// The part of the dam surface a face with mean outward normal @p n
+    /// belongs to (the rule of the class documentation).
+    StressEnvelope::Part
+    part_of(const Tensor<1, dim> &n)
+    {
+      if (n[2] > std::abs(n[0]) && n[2] > std::abs(n[1]))
+        return StressEnvelope::Part::crest;
+      if (n[0] <= -0.1)
+        return StressEnvelope::Part::upstream;
+      if (n[0] >= 0.1)
+        return StressEnvelope::Part::downstream;
+      return StressEnvelope::Part::side;
+    }
+
+    /// The dam's surface: free (0) or wetted (7); joint faces, the
+    /// truncated base and the interface with the rock are not.
+    bool
+    on_dam_surface(const types::boundary_id id)
+    {
+      return id == ids::free_surface_solid || id == ids::solid_interface;
+    }
+
+    /// Part, x, y, z, max s1, its time, min s3, its time: gathered as doubles.
+    constexpr unsigned int values_per_entry = 8;
+  } // namespace
+
+  std::string
+  StressEnvelope::name(const Part part)
+  {
+    switch (part)
+      {
+        case Part::upstream:
+          return "upstream";
+        case Part::downstream:
+          return "downstream";
+        case Part::crest:
+          return "crest";
+        default:
+          return "side";
+      }
+  }
+
+  StressEnvelope::StressEnvelope(const fe::FESpace                        &space,
+                                 const physics::solid::MaterialParameters &materials)
+    : space(space)
+  {
+    const auto &fe = space.fe_collection[fe::FESpace::solid_index];
+    const auto &q  = space.face_q_collection[fe::FESpace::solid_index];
+    for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+      component.push_back(fe.system_to_component_index(i).first);
+    // Per face number: the face's points on the unit cell, the shape
+    // gradients there, and an FEValues that maps them onto a cell.
+    std::vector<std::unique_ptr<FEValues<dim>>> at_face;
+    for (const unsigned int f : GeometryInfo<dim>::face_indices())
+      {
+        const Quadrature<dim> points =
+          QProjector<dim>::project_to_face(ReferenceCells::Hexahedron, q, f);
+        at_face.push_back(std::make_unique<FEValues<dim>>(
+          fe, points, update_quadrature_points | update_inverse_jacobians));
+        unit_gradients[f].resize(points.size());
+        for (unsigned int k = 0; k < points.size(); ++k)
+          for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
+            unit_gradients[f][k].push_back(fe.shape_grad(i, points.point(k)));
+      }
+    FEFaceValues<dim> normals(fe, q, update_normal_vectors);
+
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && ids::is_dam(cell->material_id()))
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && on_dam_surface(cell->face(f)->boundary_id()))
+            {
+              normals.reinit(cell, f);
+              Tensor<1, dim> mean_normal;
+              for (const unsigned int k : normals.quadrature_point_indices())
+                mean_normal += normals.normal_vector(k);
+              const Part part = part_of(mean_normal / mean_normal.norm());
+
+              Face face{std::vector<types::global_dof_index>(fe.dofs_per_cell),
+                        materials.of(cell->material_id()), f,
+                        static_cast<unsigned int>(entries.size())};
+              cell->get_dof_indices(face.dofs);
+              faces.push_back(face);
+              at_face[f]->reinit(cell);
+              for (const unsigned int k : at_face[f]->quadrature_point_indices())
+                {
+                  entries.push_back({part, at_face[f]->quadrature_point(k)});
+                  inverse_jacobians.push_back(Tensor<2, dim>(at_face[f]->inverse_jacobian(k)));
+                }
+            }
+    space.reinit_ghosted(ghosted_u);
+  }
+
+  void
+  StressEnvelope::update(const Vector &u, const double t)
+  {
+    ghosted_u = u;
+    std::vector<double> values(component.size());
+    for (const Face &face : faces)
+      {
+        ghosted_u.extract_subvector_to(face.dofs.begin(), face.dofs.end(), values.begin());
+        const auto &gradients = unit_gradients[face.face_no];
+        for (unsigned int k = 0; k < gradients.size(); ++k)
+          {
+            // grad u = (sum_i u_i grad_unit phi_i) J^-1: row c is component c.
+            Tensor<2, dim> unit_gradient;
+            for (unsigned int i = 0; i < values.size(); ++i)
+              unit_gradient[component[i]] += values[i] * gradients[k][i];
+            Entry &e = entries[face.first_entry + k];
+            // Hooke's law and the principal stresses (numerics.md §1).
+            const auto [s1, s3] = physics::solid::principal_stresses(face.material.stress(
+              symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k])));
+            if (!started || s1 > e.max_s1)
+              {
+                e.max_s1      = s1;
+                e.time_max_s1 = t;
+              }
+            if (!started || s3 < e.min_s3)
+              {
+                e.min_s3      = s3;
+                e.time_min_s3 = t;
+              }
+          }
+      }
+    started = true;
+  }
+
+  std::vector<StressEnvelope::Entry>
+  StressEnvelope::gather() const
+  {
+    std::vector<double> local;
+    local.reserve(values_per_entry * entries.size());
+    for (const Entry &e : entries)
+      local.insert(local.end(), {static_cast<double>(e.part), e.where[0], e.where[1],
+                                 e.where[2], e.max_s1, e.time_max_s1, e.min_s3,
+                                 e.time_min_s3});
+    std::vector<Entry> all;
+    for (const auto &from_rank : Utilities::MPI::all_gather(space.comm, local))
+      for (std::size_t i = 0; i < from_rank.size(); i += values_per_entry)
+        {
+          const double *v = &from_rank[i];
+          all.push_back({static_cast<Part>(static_cast<int>(v[0])), Point<dim>(v[1], v[2], v[3]),
+                         v[4], v[5], v[6], v[7]});
+        }
+    std::sort(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
+      return std::make_tuple(a.part, a.where[2], a.where[1], a.where[0]) <
+             std::make_tuple(b.part, b.where[2], b.where[1], b.where[0]);
+    });
+    return all;
+  }
+
+  void
+  StressEnvelope::write(const std::string &directory, Summary &summary) const
+  {
+    const std::vector<Entry> all = gather();
+    on_rank_zero(space.comm, [&] {
+      write_atomically(directory + "/stress_envelope_dynamic.csv", [&](std::ostream &out) {
+        out << "face,x [m],y [m],z [m],max s1 [Pa],time of max s1 [s],min s3 [Pa],"
+               "time of min s3 [s]\n"
+            << std::setprecision(10);
+        for (const Entry &e : all)
+          out << name(e.part) << ',' << e.where[0] << ',' << e.where[1] << ',' << e.where[2]
+              << ',' << e.max_s1 << ',' << e.time_max_s1 << ',' << e.min_s3 << ','
+              << e.time_min_s3 << '\n';
+      });
+    });
+
+    // The extremes of each part, with place and time (the same on every rank).
+    for (const Part part : {Part::upstream, Part::downstream, Part::crest, Part::side})
+      {
+        const Entry *largest = nullptr, *smallest = nullptr;
+        unsigned int n       = 0;
+        for (const Entry &e : all)
+          if (e.part == part)
+            {
+              ++n;
+              if (!largest || e.max_s1 > largest->max_s1)
+                largest = &e;
+              if (!smallest || e.min_s3 < smallest->min_s3)
+                smallest = &e;
+            }
+        if (n == 0)
+          continue;
+        const std::string key = "stress envelope/" + name(part) + "/";
+        summary.set(key + "points", n);
+        const auto place = [&](const std::string &what, const double value, const double time,
+                               const Point<dim> &where) {
+          summary.set(key + what + "/value", value);
+          summary.set(key + what + "/time [s]", time);
+          for (unsigned int d = 0; d < dim; ++d)
+            summary.set(key + what + "/" + std::string(1, "xyz"[d]) + " [m]", where[d]);
+        };
+        place("max major principal stress [Pa]", largest->max_s1, largest->time_max_s1,
+              largest->where);
+        place("min minor principal stress [Pa]", smallest->min_s3, smallest->time_min_s3,
+              smallest->where);
+      }
+  }
+} // namespace archdam::output

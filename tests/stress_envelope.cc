@@ -1,0 +1,395 @@
+// The stress envelope on the dam faces (output/stress_envelope.h,
+// numerics.md §7) against a closed form and against a second method.
+//
+// A. Static state kept through the dynamic stage. A concrete column
+//    [0, a] x [0, a] x [0, H] of two glued blocks (the joint is the plane
+//    y = a/2), clamped at z = 0, Poisson's ratio 0, under its own weight; the
+//    dynamic stage starts from the static state and has no ground motion, so
+//    the state stays the static one. With nu = 0 the exact solution is
+//    sigma_zz = -rho g (H - z), all other components 0 (tests/gravity_column.cc
+//    gives the derivation), and quadratic elements reproduce it exactly: the
+//    FE error is zero and only round-off remains (the factorized solves of the
+//    static and of each dynamic step), so the envelope must give at every face
+//    point min s3 = -rho g (H - z) to 1e-8 rho g H and max s1 = 0 to
+//    1e-7 rho g H (s1 = s2 = 0 is a double eigenvalue, whose closed-form
+//    evaluation loses half the digits, see gravity_column.cc).
+//    Which points: the 3 x 3 Gauss points of every dam face on the surface.
+//    Counted here from the mesh: upstream x = 0 and downstream x = a each 2 x 8
+//    faces, crest z = H 2 x 2 faces, the free ends y = 0 and y = a ("side")
+//    2 x 2 x 8 faces; the joint's faces and the clamped base none. Each point
+//    is located on the model mesh by geometry alone: it must lie on exactly
+//    one boundary face of a dam cell, whose outward normal (from the face's
+//    vertices) points the claimed way, and on none of the joint faces listed
+//    by joints::pair_joint_faces().
+// B. Base shaking of a short stiff block. A 4 m x 4 m x 6 m block (two glued
+//    blocks, nu = 0.2) on a clamped base, gravity then a harmonic stream
+//    acceleration 3 sin(2 pi 5 t) m/s^2 for 0.4 s. Second method: monitors at
+//    three face points (downstream near the base, upstream near the base, the
+//    crest) record s1 and s3 every step; the envelope at the same points must
+//    equal the largest s1 and the smallest s3 of those histories, at the same
+//    times. The two evaluate the same cell's displacement gradient at the same
+//    point through different code (the monitor's inverse map against the face
+//    quadrature), so they agree to round-off: 1e-8 of the peak.
+// C. Wetted faces and a curved dam. The coarse arch dam (14 blocks, one cell
+//    across each block and through the thickness, 4 over the height, Q1) with
+//    compressible water up to 202 m: the upstream face is wetted (id 7) below
+//    the water and free above, the faces are curved. Every dam cell has one
+//    upstream and one downstream face, the top row one crest face each:
+//    14 x 4 faces upstream and downstream, 14 crest faces, none on a side,
+//    2 x 2 points per face. The crest points lie at z = H = 235 m.
+
+#include <archdam/analysis/simulation.h>
+#include <archdam/geometry/ids.h>
+#include <archdam/geometry/mesh.h>
+#include <archdam/geometry/splitter.h>
+#include <archdam/joints/joint_faces.h>
+#include <archdam/parameters/parameters.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <boost/property_tree/json_parser.hpp>
+
+#include "archdam_tests.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace dealii;
+using namespace archdam;
+using archdam::testing::check_below;
+using archdam::testing::check_relative;
+using archdam::testing::log;
+
+namespace
+{
+  struct Row
+  {
+    std::string part;
+    Point<dim>  where;
+    double      max_s1, time_max_s1, min_s3, time_min_s3;
+  };
+
+  /// stress_envelope_dynamic.csv, read with a parser of its own.
+  std::vector<Row>
+  read_envelope(const std::string &file)
+  {
+    std::ifstream in(file);
+    AssertThrow(in, ExcMessage("missing " + file));
+    std::string line;
+    std::getline(in, line);
+    AssertThrow(line == "face,x [m],y [m],z [m],max s1 [Pa],time of max s1 [s],min s3 [Pa],"
+                        "time of min s3 [s]",
+                ExcMessage("unexpected header " + line));
+    std::vector<Row> rows;
+    while (std::getline(in, line))
+      {
+        std::stringstream        s(line);
+        std::vector<std::string> f;
+        for (std::string field; std::getline(s, field, ',');)
+          f.push_back(field);
+        AssertThrow(f.size() == 8, ExcMessage("bad row " + line));
+        rows.push_back({f[0], Point<dim>(std::stod(f[1]), std::stod(f[2]), std::stod(f[3])),
+                        std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7])});
+      }
+    return rows;
+  }
+
+  /// Whether @p x lies on the (planar) face @p f: in its plane and inside its
+  /// bounding box, to @p tol.
+  bool
+  on_face(const Triangulation<dim>::face_iterator &f, const Point<dim> &x, const double tol)
+  {
+    Point<dim> lo = f->vertex(0), hi = f->vertex(0);
+    for (unsigned int v = 1; v < 4; ++v)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lo[d] = std::min(lo[d], f->vertex(v)[d]);
+          hi[d] = std::max(hi[d], f->vertex(v)[d]);
+        }
+    const Tensor<1, dim> n = cross_product_3d(f->vertex(1) - f->vertex(0),
+                                              f->vertex(2) - f->vertex(0));
+    if (std::abs((x - f->vertex(0)) * n) > tol * n.norm())
+      return false;
+    for (unsigned int d = 0; d < dim; ++d)
+      if (x[d] < lo[d] - tol || x[d] > hi[d] + tol)
+        return false;
+    return true;
+  }
+
+  std::string
+  case_text(const double L, const double W, const double H, const unsigned int nx,
+            const unsigned int ny, const unsigned int nz, const double nu,
+            const std::string &name, const std::string &extra)
+  {
+    std::ostringstream prm;
+    prm << "subsection Mesh\n  subsection Box\n    set Length = " << L
+        << "\n    set Width = " << W << "\n    set Height = " << H
+        << "\n    set Number of blocks = 2\n    set Cells in x = " << nx
+        << "\n    set Cells in y = " << ny << "\n    set Cells in z = " << nz
+        << "\n    set Rock depth = 0\n  end\nend\n"
+        << "subsection Finite element\n  set Degree = 2\nend\n"
+        << "subsection Materials\n  subsection Concrete\n    set Young's modulus = 25e9\n"
+        << "    set Poisson's ratio = " << nu << "\n    set Density = 2500\n  end\nend\n"
+        << "subsection Static loads\n  set Gravity = true\n"
+        << "  set Gravitational acceleration = 9.81\nend\n"
+        << "subsection Analysis\n  set Case name = " << name
+        << "\n  set Stages = static, dynamic\nend\n"
+        << "subsection Output\n  set Directory = " << name << "_results\n"
+        << "  set Field output interval = 0\n  set Progress = false\n"
+        << "  set Timer summary = false\nend\n"
+        << extra;
+    return prm.str();
+  }
+
+  void
+  static_column()
+  {
+    log() << "--- A. static state through the dynamic stage ---" << std::endl;
+    constexpr double a = 2., H = 20., rho = 2500., g = 9.81;
+    const Parameters p = parameters_from_string(
+      case_text(a, a, H, 2, 2, 8, 0., "envelope_column",
+                "subsection Time integration\n  set Time step = 0.01\n"
+                "  set End time = 0.03\nend\n"));
+    std::ostringstream   screen;
+    analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
+    sim.run();
+    MPI_Barrier(MPI_COMM_WORLD);
+    const auto rows = read_envelope("envelope_column_results/stress_envelope_dynamic.csv");
+
+    // Counts: faces on each part, 9 points each.
+    std::map<std::string, unsigned int> count;
+    for (const auto &r : rows)
+      ++count[r.part];
+    const std::map<std::string, unsigned int> expected = {
+      {"upstream", 2 * 8 * 9}, {"downstream", 2 * 8 * 9}, {"crest", 2 * 2 * 9},
+      {"side", 2 * 2 * 8 * 9}};
+    for (const auto &[part, n] : expected)
+      log() << part << " points: " << count[part] << " (expected " << n
+            << "): " << (count[part] == n ? "yes" : "NO") << std::endl;
+    log() << "points in all: " << rows.size() << " (expected "
+          << (2 * 8 + 2 * 8 + 2 * 2 + 2 * 2 * 8) * 9 << ")" << std::endl;
+
+    // Where each point lies, from the model mesh alone.
+    Triangulation<dim> model;
+    geometry::build_model_mesh(p.mesh, "", model);
+    const auto   joint_faces = joints::pair_joint_faces(model);
+    const double tol         = 1e-9 * H;
+    unsigned int misplaced = 0, wrong_way = 0, on_joint = 0;
+    for (const auto &r : rows)
+      {
+        unsigned int  n_faces = 0;
+        std::string   way;
+        for (const auto &cell : model.active_cell_iterators())
+          if (ids::is_dam(cell->material_id()))
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f) && on_face(cell->face(f), r.where, tol))
+                {
+                  ++n_faces;
+                  // Outward: from the cell's centre towards the face's.
+                  Tensor<1, dim> n = cross_product_3d(cell->face(f)->vertex(1) - cell->face(f)->vertex(0),
+                                                      cell->face(f)->vertex(2) - cell->face(f)->vertex(0));
+                  n /= n.norm();
+                  if (n * (cell->face(f)->center() - cell->center()) < 0)
+                    n = -n;
+                  way = n[2] > 0.99  ? "crest" :
+                        n[0] < -0.99 ? "upstream" :
+                        n[0] > 0.99  ? "downstream" :
+                                       "side";
+                }
+        if (n_faces != 1)
+          ++misplaced;
+        else if (way != r.part)
+          ++wrong_way;
+        for (const auto &pair : joint_faces)
+          if (on_face(pair.cell_1->face(pair.face_1), r.where, tol) ||
+              on_face(pair.cell_2->face(pair.face_2), r.where, tol))
+            ++on_joint;
+      }
+    log() << "joint faces listed: " << joint_faces.size() << std::endl;
+    log() << "points not on exactly one boundary face of the dam: " << misplaced << std::endl;
+    log() << "points whose face normal points another way than claimed: " << wrong_way
+          << std::endl;
+    log() << "points on a joint face: " << on_joint << std::endl;
+
+    // The envelope against the closed form.
+    double s3_error = 0., s1_error = 0.;
+    for (const auto &r : rows)
+      {
+        s3_error = std::max(s3_error, std::abs(r.min_s3 + rho * g * (H - r.where[2])));
+        s1_error = std::max(s1_error, std::abs(r.max_s1));
+      }
+    check_below("max |min s3 + rho g (H - z)| / (rho g H) over all points",
+                s3_error / (rho * g * H), 1e-8);
+    check_below("max |max s1| / (rho g H) over all points", s1_error / (rho * g * H), 1e-7);
+
+    // The summary: the most compressive upstream point is the lowest one,
+    // z = (1/2 - sqrt(15)/10) h with h = H/8 (the lowest Gauss point).
+    boost::property_tree::ptree summary;
+    boost::property_tree::read_json("envelope_column_results/summary.json", summary);
+    using path = boost::property_tree::ptree::path_type;
+    const double z_low = (0.5 - std::sqrt(15.) / 10) * H / 8;
+    for (const std::string part : {"upstream", "downstream"})
+      {
+        const std::string key = "stress envelope/" + part + "/min minor principal stress [Pa]/";
+        check_relative("summary " + part + " min s3 [Pa]",
+                       summary.get<double>(path(key + "value", '/')), -rho * g * (H - z_low),
+                       1e-8);
+        check_below("summary " + part + " |z of min s3 - lowest Gauss point| [m]",
+                    std::abs(summary.get<double>(path(key + "z [m]", '/')) - z_low), 1e-9);
+      }
+  }
+
+  void
+  shaken_block()
+  {
+    log() << "--- B. base shaking: envelope against the monitor histories ---" << std::endl;
+    constexpr double L = 4., W = 4., H = 6., dt = 0.005, end = 0.4;
+    // A record of 3 sin(2 pi 5 t) m/s^2, every 0.005 s.
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ofstream r("envelope_record.txt");
+        r << std::setprecision(12);
+        for (int k = 0; k * dt <= end + 1e-9; ++k)
+          r << k * dt << " " << 3 * std::sin(2 * M_PI * 5 * k * dt) << "\n";
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+
+    // Face Gauss points (QGauss(3) on [0, 1]: 1/2 - sqrt(15)/10, 1/2, ...) of
+    // cells 2 m wide: the first one near the corner, in each direction.
+    const double         g0 = 2 * (0.5 - std::sqrt(15.) / 10);
+    const std::vector<std::pair<std::string, Point<dim>>> points = {
+      {"downstream", Point<dim>(L, g0, g0)},
+      {"upstream", Point<dim>(0, g0, g0)},
+      {"crest", Point<dim>(g0, g0, H)}};
+    std::ostringstream monitors;
+    for (const auto &[name, x] : points)
+      monitors << (monitors.str().empty() ? "" : "; ") << name << ": " << std::setprecision(17)
+               << x[0] << ", " << x[1] << ", " << x[2];
+
+    const Parameters p = parameters_from_string(case_text(
+      L, W, H, 2, 2, 3, 0.2, "envelope_block",
+      "subsection Time integration\n  set Time step = 0.005\n  set End time = 0.4\nend\n"
+      "subsection Ground motion\n  subsection Component x\n"
+      "    set File = envelope_record.txt\n    set Format = two-column\n"
+      "    set Units = m/s^2\n  end\nend\n"
+      "subsection Monitors\n  set Points = " +
+        monitors.str() + "\n  set Quantities = principal stress\nend\n"));
+    std::ostringstream   screen;
+    analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
+    sim.run();
+    MPI_Barrier(MPI_COMM_WORLD);
+    const auto  rows    = read_envelope("envelope_block_results/stress_envelope_dynamic.csv");
+    const auto &history = sim.histories().rows();
+    const auto &names   = sim.histories().columns();
+    log() << "steps recorded: " << history.size() << std::endl;
+
+    for (const auto &[name, x] : points)
+      {
+        const Row *row = nullptr;
+        for (const auto &r : rows)
+          if (r.where.distance(x) < 1e-6)
+            row = &r;
+        log() << name << " point in the envelope, on the " << (row ? row->part : "(none)")
+              << " face" << std::endl;
+        if (!row)
+          continue;
+        unsigned int c1 = 0, c3 = 0;
+        for (unsigned int c = 0; c < names.size(); ++c)
+          {
+            if (names[c] == name + ".s1 [Pa]")
+              c1 = c;
+            if (names[c] == name + ".s3 [Pa]")
+              c3 = c;
+          }
+        unsigned int k1 = 0, k3 = 0;
+        for (unsigned int k = 0; k < history.size(); ++k)
+          {
+            if (history[k][c1] > history[k1][c1])
+              k1 = k;
+            if (history[k][c3] < history[k3][c3])
+              k3 = k;
+          }
+        const double scale = std::max(std::abs(history[k1][c1]), std::abs(history[k3][c3]));
+        check_below(name + " |envelope max s1 - max of the monitor's s1| / peak",
+                    std::abs(row->max_s1 - history[k1][c1]) / scale, 1e-8);
+        log() << name << " max s1 = " << std::setprecision(1) << history[k1][c1] / 1e6
+              << " MPa at t = " << std::setprecision(3) << history[k1][0] << " s, the envelope's time the same: "
+              << (std::abs(row->time_max_s1 - history[k1][0]) < dt / 2 ? "yes" : "NO")
+              << std::endl;
+        check_below(name + " |envelope min s3 - min of the monitor's s3| / peak",
+                    std::abs(row->min_s3 - history[k3][c3]) / scale, 1e-8);
+        log() << name << " min s3 = " << std::setprecision(1) << history[k3][c3] / 1e6
+              << " MPa at t = " << std::setprecision(3) << history[k3][0] << " s, the envelope's time the same: "
+              << (std::abs(row->time_min_s3 - history[k3][0]) < dt / 2 ? "yes" : "NO")
+              << std::endl;
+      }
+  }
+
+  void
+  arch_dam_with_water()
+  {
+    log() << "--- C. arch dam with water: wetted and curved faces ---" << std::endl;
+    const Parameters p = parameters_from_string(R"(
+subsection Mesh
+  set Source = arch dam
+  subsection Arch dam
+    set Cells across each block = 1
+    set Cells through thickness = 1
+    set Cells over height = 4
+  end
+end
+subsection Finite element
+  set Degree = 1
+end
+subsection Reservoir
+  set Model = compressible
+end
+subsection Analysis
+  set Stages = static, dynamic
+end
+subsection Time integration
+  set Time step = 0.01
+  set End time = 0.02
+end
+subsection Output
+  set Directory = envelope_arch_results
+  set Field output interval = 0
+  set Progress = false
+  set Timer summary = false
+end
+)");
+    std::ostringstream   screen;
+    analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
+    sim.run();
+    MPI_Barrier(MPI_COMM_WORLD);
+    const auto rows = read_envelope("envelope_arch_results/stress_envelope_dynamic.csv");
+    std::map<std::string, unsigned int> count;
+    double                              crest_z_error = 0.;
+    for (const auto &r : rows)
+      {
+        ++count[r.part];
+        if (r.part == "crest")
+          crest_z_error = std::max(crest_z_error, std::abs(r.where[2] - 235.));
+      }
+    const std::map<std::string, unsigned int> expected = {
+      {"upstream", 14 * 4 * 4}, {"downstream", 14 * 4 * 4}, {"crest", 14 * 4}, {"side", 0}};
+    for (const auto &[part, n] : expected)
+      log() << part << " points: " << count[part] << " (expected " << n
+            << "): " << (count[part] == n ? "yes" : "NO") << std::endl;
+    check_below("crest points: max |z - 235 m| [m]", crest_z_error, 1e-9);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  static_column();
+  shaken_block();
+  arch_dam_with_water();
+  return 0;
+}
