@@ -12,6 +12,9 @@ again unless --rerun), then draws from whatever results exist:
                            compressible / incompressible / Westergaard water
   crest_displacement.png   stream displacement of the crest, every case run
   opening_envelopes.png    per joint, the maximum opening over the height
+  stress_envelope_<case>.png  largest major principal stress over the run on
+                           the upstream and downstream faces (reference and
+                           glued; scripts/stress_envelope_plot.py)
   comparison.csv           one row per case: the peaks the figures show
 
 Usage (from the project root):
@@ -34,6 +37,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stress_envelope_plot  # noqa: E402
 
 CASES = ["reference", "glued", "incompressible", "westergaard", "massless", "pacoima"]
 LABELS = {
@@ -124,8 +130,9 @@ def figure(path, draw, title, xlabel, ylabel):
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(True, alpha=0.3)
-    if ax.get_legend_handles_labels()[0]:
-        ax.legend(fontsize=8)
+    handles = ax.get_legend_handles_labels()[0]
+    if handles:
+        ax.legend(fontsize=8, ncol=2 if len(handles) > 3 else 1)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
@@ -196,6 +203,13 @@ def draw_all(args, results):
         figure(os.path.join(args.figures, "opening_envelopes.png"), envelopes,
                "Maximum opening over the height of each joint (reference case)",
                "maximum opening [mm]", "elevation z [m]")
+
+    for c in ["reference", "glued"]:
+        envelope = results.get(c) and os.path.join(results[c]["dir"], "stress_envelope_dynamic.csv")
+        if envelope and os.path.exists(envelope):
+            png = os.path.join(args.figures, f"stress_envelope_{c}.png")
+            stress_envelope_plot.draw(envelope, png, f"Largest major principal stress, {LABELS[c]}")
+            print("wrote", png)
 
     path = os.path.join(args.figures, "comparison.csv")
     with open(path, "w") as f:
