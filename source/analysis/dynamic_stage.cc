@@ -28,6 +28,33 @@ namespace archdam::analysis
   } // namespace
 
   /**
+   * The energy balance of the dynamic stage (numerics.md §7) on the model's
+   * own operators: the solid's M, K and Rayleigh damping, the water's
+   * operators, and the foundation's boundary; from the current (static) state.
+   */
+  void
+  Simulation::start_energy_balance()
+  {
+    EnergyBalance::Model model;
+    model.space     = fe_space.get();
+    model.mass      = &mass_matrix;
+    model.stiffness = &stiffness_matrix;
+    model.rayleigh  = p.damping.rayleigh_coefficients();
+    model.newmark   = p.time_integration;
+    model.fluid     = fluid_operators.get();
+    model.density   = p.reservoir.density;
+    if (massed_foundation)
+      {
+        model.viscous    = massed_foundation->viscous_boundary();
+        model.prescribed = massed_foundation->prescribed_dofs();
+      }
+    else
+      model.influence = &influence_load;
+    energy = std::make_unique<EnergyBalance>(model);
+    energy->start(current, joint_solver.get());
+  }
+
+  /**
    * Dynamic stage (numerics.md §2 and §6, step 3): the generalized Newmark
    * scheme from the static state at rest, under F(t) = F_static - M iota a_g(t),
    * recording the monitors every step and the fields every few steps.
@@ -90,6 +117,7 @@ namespace archdam::analysis
       pressure->record(current);
     if (massed_foundation)
       massed_foundation->start(current.u);
+    start_energy_balance();
 
     Vector     load;
     fe_space->reinit(load);
@@ -118,6 +146,13 @@ namespace archdam::analysis
             check_contact_step(contact, n * dt);
           current.time = n * dt; // no drift from repeated additions
         }
+        {
+          TimerOutput::Scope t(timer, "dynamic: energy balance");
+          energy->add_step(current,
+                           massed_foundation ? Tensor<1, dim>() :
+                                               ground_motion->acceleration(current.time),
+                           joint_solver.get());
+        }
         try
           {
             divergence.check(current, n);
@@ -133,6 +168,7 @@ namespace archdam::analysis
             summary.set("stopped/step", stop.step);
             summary.set("stopped/time [s]", stop.time);
             summary.set("stopped/last complete time [s]", (n - 1) * dt);
+            energy->add_to(summary);
             write_summary();
             throw;
           }
@@ -162,6 +198,8 @@ namespace archdam::analysis
     history->finish();
     if (pressure)
       pressure->finish();
+    energy->add_to(summary);
+    screen << energy->line() << std::endl;
 
     summary.set("dynamic/time step [s]", dt);
     summary.set("dynamic/steps", n_steps);
