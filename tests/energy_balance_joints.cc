@@ -132,6 +132,7 @@ main(int argc, char **argv)
   without.contact = 0.;
   log << "  balance without the contact term open by more than 50 %: "
       << (without.balance_error() > 0.5 ? "yes" : "NO") << std::endl;
-  std::cerr << "balance error " << e.balance_error() << " kinetic " << e.kinetic << " strain "
+  if (std::getenv("ENERGY_BALANCE_NUMBERS")) // the terms, for the verification report
+    std::cerr << "balance error " << e.balance_error() << " kinetic " << e.kinetic << " strain "
             << e.strain << " contact " << e.contact << " input " << e.input << std::endl;
 }

@@ -24,10 +24,10 @@ namespace archdam::analysis
   {
     AssertThrow(m.space && m.mass && m.stiffness,
                 ExcMessage("The energy balance needs the FE space, M and K."));
-    for (Vector *v : {&pressure_mask, &prescribed_mask, &u_static, &u_prev, &v_prev,
-                      &damping_prev, &p_prev, &impulse, &boundary_prev, &boundary_static,
-                      &free_field_prev, &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &tmp, &tmp2,
-                      &du, &work, &scratch})
+    for (Vector *v :
+         {&pressure_mask, &prescribed_mask, &u_static, &u_prev, &v_prev, &damping_prev, &p_prev,
+          &impulse, &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
+          &radiation_prev, &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -48,8 +48,46 @@ namespace archdam::analysis
   void
   EnergyBalance::free_part(const Vector &x, Vector &out) const
   {
+    // The free entries, and with a prescribed boundary its entries too: the
+    // balance is that of the whole model, the boundary nodes included.
     out = x;
     m.space->constraints.set_zero(out);
+    if (m.prescribed)
+      {
+        scratch = x;
+        scratch.scale(prescribed_mask);
+        out += scratch;
+      }
+  }
+
+  void
+  EnergyBalance::full_product(const SparseMatrix &A, const SparseMatrix *A_columns,
+                              const Vector &x, Vector &out) const
+  {
+    // A x for the full (unconstrained) solid operator, x from free_part():
+    // the condensed A on the free entries, and with a prescribed boundary b
+    // its columns (time::PrescribedDofs, all rows of the cells touching b):
+    //   (A x)_f = A_cond x_f + (A_col x_b)_f,   (A x)_b = (A_col x)_b.
+    // The water's rows (Phi S in the coupled columns) are left out.
+    A.vmult(out, x);
+    m.space->constraints.set_zero(out);
+    if (A_columns)
+      {
+        A_columns->vmult(scratch, x);
+        scratch.scale(prescribed_mask);
+        out += scratch;
+        scratch = x;
+        scratch.scale(prescribed_mask);
+        A_columns->vmult(product, scratch);
+        m.space->constraints.set_zero(product);
+        out += product;
+      }
+    if (has_water)
+      {
+        scratch = out;
+        scratch.scale(pressure_mask);
+        out -= scratch;
+      }
   }
 
   void
@@ -57,39 +95,31 @@ namespace archdam::analysis
   {
     // D = alpha M + beta K (numerics.md §1); for the coupled system this is
     // the solid's block of D_c, the water's radiation being counted apart.
-    m.mass->vmult(out, v);
+    full_product(*m.mass, mass_columns(), v, out);
     out *= m.rayleigh.first;
     if (m.rayleigh.second != 0.)
       {
-        m.stiffness->vmult(scratch, v);
-        out.add(m.rayleigh.second, scratch);
+        full_product(*m.stiffness, stiffness_columns(), v, tmp2);
+        out.add(m.rayleigh.second, tmp2);
       }
   }
 
   void
-  EnergyBalance::boundary_load(const time::NewmarkState &s, Vector &out)
+  EnergyBalance::boundary_reaction(const time::NewmarkState &s, Vector &out)
   {
-    // The prescribed DOFs b act on the free ones through the full columns
-    // (time::PrescribedDofs): -M_fb (a_b + alpha v_b) - K_fb (u_b + beta v_b).
-    // Only the solid rows: the water's rows are counted by its own balance.
+    // The force the exterior applies to the prescribed DOFs b to move them:
+    // (M a + D v + K u)_b of the full operators (the water's pressure on b
+    // is counted with the water's balance below).
     const auto [alpha, beta] = m.rayleigh;
-    scratch = s.a;
-    scratch.add(alpha, s.v);
-    scratch.scale(prescribed_mask);
-    m.prescribed->mass_columns.vmult(out, scratch);
-    scratch = s.u;
-    scratch.add(beta, s.v);
-    scratch.scale(prescribed_mask);
-    m.prescribed->stiffness_columns.vmult(tmp2, scratch);
+    free_part(s.a, work);
+    free_part(s.v, tmp2);
+    work.add(alpha, tmp2);
+    m.prescribed->mass_columns.vmult(out, work);
+    free_part(s.u, work);
+    work.add(beta, tmp2);
+    m.prescribed->stiffness_columns.vmult(tmp2, work);
     out += tmp2;
-    out *= -1.;
-    if (has_water)
-      {
-        tmp2 = out;
-        tmp2.scale(pressure_mask);
-        out -= tmp2;
-      }
-    m.space->constraints.set_zero(out);
+    out.scale(prescribed_mask);
   }
 
   void
@@ -111,7 +141,7 @@ namespace archdam::analysis
       }
     if (m.prescribed)
       {
-        boundary_load(s, boundary_static);
+        boundary_reaction(s, boundary_static);
         boundary_prev = boundary_static;
         ub_prev       = s.u;
         ub_prev.scale(prescribed_mask);
@@ -184,9 +214,9 @@ namespace archdam::analysis
 
     if (m.prescribed)
       {
-        // Net work of the prescribed boundary on the free DOFs (MTF: input
-        // minus radiated), from the static state.
-        boundary_load(s, tmp);
+        // Work of the reactions on the prescribed boundary (MTF: input minus
+        // radiated), from the static state.
+        boundary_reaction(s, tmp);
         sums.input += 0.5 * (du * boundary_prev + du * tmp) - du * boundary_static;
         boundary_prev = tmp;
       }
@@ -214,9 +244,10 @@ namespace archdam::analysis
               sums.input -= 0.5 / rho * dug[d] * (tmp2 * m.fluid->influence[d]);
         if (m.prescribed)
           {
-            // The boundary moves the wetted rock under the water: the fluid
-            // rows of the prescribed mass columns are Phi S(:, b),
-            // Phi = -beta2 dt^2 / rho (reservoir/coupled_system.h), so
+            // The boundary moves the wetted rock under the water (the
+            // constrained S has no columns at b): the fluid rows of the
+            // prescribed mass columns are Phi S(:, b), Phi = -beta2 dt^2 / rho
+            // (reservoir/coupled_system.h), so
             // -(1/rho) p_mid . S_b du_b = p_mid . (Mcol du_b) / (beta2 dt^2).
             tmp = s.u;
             tmp.scale(prescribed_mask);
@@ -232,7 +263,13 @@ namespace archdam::analysis
       {
         // The joints absorb f . dw (the load on the dam is -B^T f, numerics.md §3).
         for (unsigned int k = 0; k < f_prev.size(); ++k)
-          sums.contact += 0.5 * (joints->force[k] + f_prev[k]) * (joints->w[k] - w_prev[k]);
+          {
+            const double work_k =
+              0.5 * (joints->force[k] + f_prev[k]) * (joints->w[k] - w_prev[k]);
+            sums.contact += work_k;
+            if (k % dim == 0) // xi, the normal of the pair's frame
+              sums.contact_normal += work_k;
+          }
         f_prev = joints->force;
         w_prev = joints->w;
       }
@@ -243,26 +280,20 @@ namespace archdam::analysis
   EnergyBalance::terms() const
   {
     EnergyTerms e = sums;
-    m.mass->vmult(scratch, v_prev);
-    e.kinetic = 0.5 * (scratch * v_prev);
-    Vector w(u_prev);
+    Vector      w(u_prev), Ax(u_prev);
+    full_product(*m.mass, mass_columns(), v_prev, Ax);
+    e.kinetic = 0.5 * (Ax * v_prev);
     w -= u_static;
-    if (has_water) // the solid's part only (K has no water rows; safe anyway)
-      {
-        Vector p(w);
-        p.scale(pressure_mask);
-        w -= p;
-      }
-    m.stiffness->vmult(scratch, w);
-    e.strain = 0.5 * (scratch * w);
+    full_product(*m.stiffness, stiffness_columns(), w, Ax);
+    e.strain = 0.5 * (Ax * w);
     for (unsigned int k = 0; k < f_static.size(); ++k)
       e.strain -= f_static[k] * (w_prev[k] - w_static[k]);
     if (has_water)
       {
-        m.fluid->G.vmult(scratch, p_prev);
-        e.water = 0.5 / m.density * (scratch * p_prev);
-        m.fluid->Q.vmult(scratch, impulse);
-        e.water += 0.5 / m.density * (scratch * impulse);
+        m.fluid->G.vmult(Ax, p_prev);
+        e.water = 0.5 / m.density * (Ax * p_prev);
+        m.fluid->Q.vmult(Ax, impulse);
+        e.water += 0.5 / m.density * (Ax * impulse);
       }
     return e;
   }
@@ -278,6 +309,8 @@ namespace archdam::analysis
     summary.set(s + "damping dissipation [J]", e.damping);
     summary.set(s + "radiated energy [J]", e.radiated);
     summary.set(s + "contact dissipation [J]", e.contact);
+    if (!f_static.empty())
+      summary.set(s + "contact dissipation, normal part [J]", e.contact_normal);
     if (has_water)
       {
         summary.set(s + "water energy [J]", e.water);

@@ -20,7 +20,8 @@ namespace archdam::analysis
   {
     /// Work put into the model: the ground motion's inertia loads (relative
     /// formulation), the free-field forces of the viscous boundary, or the net
-    /// work of a prescribed outer boundary (MTF: input minus radiated).
+    /// work of the reactions on a prescribed outer boundary (MTF: input minus
+    /// radiated).
     double input = 0.;
     /// 1/2 v^T M v at the end.
     double kinetic = 0.;
@@ -31,8 +32,14 @@ namespace archdam::analysis
     double damping = 0.;
     /// int v^T c v dt in the dashpots of the viscous boundary.
     double radiated = 0.;
-    /// int f . dw at the joints (friction, impact; f the total pair forces).
+    /// int f . dw at the joints (f the total pair forces): friction, and
+    /// the normal forces' work on the gaps,
     double contact = 0.;
+    /// of which the normal part int f_xi dw_xi: zero in the continuous law
+    /// (a pair is closed or free of force), in the scheme the work of the
+    /// trapezoidal mean force over the steps where pairs open (released,
+    /// negative) or close (impact, positive).
+    double contact_normal = 0.;
     /// The water's acoustic energy at the end: 1/(2 rho_w) (p^T G p + P^T Q P),
     /// P = int p dt (potential, free-surface waves and kinetic).
     double water = 0.;
@@ -64,8 +71,12 @@ namespace archdam::analysis
    * starts from. The water's balance uses the fluid equation integrated in
    * time, G p_t + H p + Q P + S (u_t + iota v_g) = 0 (P = int p dt,
    * trapezoidal), times p: its coupling work with the dam cancels the dam's.
-   * Cost per step: M v, K v (damping), H p (water), the prescribed columns
-   * (MTF) and vector operations.
+   * With a prescribed outer boundary (MTF) the balance is that of the whole
+   * model, the boundary nodes included (full operators from the prescribed
+   * columns), and the input is the work of the reactions there: input minus
+   * radiated, which the MTF does not separate.
+   * Cost per step: M v and K v (damping; with a prescribed boundary also its
+   * columns), H p (water), the boundary reactions, and vector operations.
    */
   class EnergyBalance
   {
@@ -115,30 +126,46 @@ namespace archdam::analysis
 
   private:
     /// x with its constrained entries zero (the condensed matrices act on it
-    /// as the full ones on the constrained field).
+    /// as the full ones on the constrained field), its prescribed entries kept.
     void
     free_part(const Vector &x, Vector &out) const;
-    /// D v = alpha M v + beta K v for the free velocity v.
+    /// The full solid operator (condensed @p A plus its prescribed
+    /// @p A_columns, if any) times x from free_part(); solid rows only.
+    void
+    full_product(const SparseMatrix &A, const SparseMatrix *A_columns, const Vector &x,
+                 Vector &out) const;
+    /// D v = alpha M v + beta K v (full operators).
     void
     damping_force(const Vector &v, Vector &out) const;
-    /// The load of the prescribed boundary on the solid's free DOFs at the
-    /// state @p s.
+    /// The reaction on the prescribed DOFs at the state @p s.
     void
-    boundary_load(const time::NewmarkState &s, Vector &out);
+    boundary_reaction(const time::NewmarkState &s, Vector &out);
+    const SparseMatrix *
+    mass_columns() const
+    {
+      return m.prescribed ? &m.prescribed->mass_columns : nullptr;
+    }
+    const SparseMatrix *
+    stiffness_columns() const
+    {
+      return m.prescribed ? &m.prescribed->stiffness_columns : nullptr;
+    }
 
     const Model m;
     const bool  has_water;
     /// 1 at the free pressure DOFs; 1 at the prescribed DOFs.
     Vector pressure_mask, prescribed_mask;
 
+    /// The state after the last step (free and prescribed entries), the
+    /// static state, and each force group at the last step.
     Vector u_static, u_prev, v_prev, damping_prev, p_prev, impulse, boundary_prev,
-      boundary_static, free_field_prev, free_field_static, radiation_prev, dashpot_prev, ub_prev, tmp, tmp2, du,
-      work;
+      boundary_static, free_field_prev, free_field_static, radiation_prev, dashpot_prev, ub_prev,
+      tmp, du, work;
     dealii::Tensor<1, dim> ag_prev, vg;
     std::vector<double>    f_static, w_static, f_prev, w_prev;
     double                 t_prev = 0.;
 
     EnergyTerms sums; ///< the path integrals (input, damping, radiated, contact, water radiated)
-    mutable Vector scratch;
+    mutable Vector scratch, product, tmp2;
   };
 } // namespace archdam::analysis
