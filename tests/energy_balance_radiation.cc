@@ -25,11 +25,9 @@
 // incident energy rho c A int v_in^2 dt (the half of the viscous input above,
 // 5 %), and once the pulse has left through the bottom the net work must be
 // below 2 % of it (foundation_column's reflection bound). The kinetic and
-// strain energies are those of the free DOFs with the boundary held: while
-// the pulse crosses the bottom, the energy of the cells touching the moving
-// boundary is split between them and the net boundary work, which swing
-// (here to 2.8 times the incident energy for a few steps) while their sum
-// stays balanced.
+// strain energies are the whole column's, the boundary nodes included (full
+// operators from the prescribed columns): the work of the reactions on the
+// boundary is what crosses it.
 
 #include <archdam/analysis/energy_balance.h>
 #include <archdam/physics/foundation/massed_foundation.h>
