@@ -24,10 +24,10 @@ namespace archdam::analysis
   {
     AssertThrow(m.space && m.mass && m.stiffness,
                 ExcMessage("The energy balance needs the FE space, M and K."));
-    for (Vector *v :
-         {&pressure_mask, &prescribed_mask, &u_static, &u_prev, &v_prev, &damping_prev, &p_prev,
-          &impulse, &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
-          &radiation_prev, &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product})
+    for (Vector *v : {&free_mask, &kept_mask, &pressure_mask, &prescribed_mask, &u_static,
+                      &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
+                      &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
+                      &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -43,6 +43,12 @@ namespace archdam::analysis
             prescribed_mask(i) = 1.;
         prescribed_mask.compress(VectorOperation::insert);
       }
+    // Setting constrained entries to zero one by one costs a PETSc call per
+    // entry; a pointwise product with a mask is one pass.
+    free_mask = 1.;
+    m.space->constraints.set_zero(free_mask);
+    kept_mask = free_mask;
+    kept_mask += prescribed_mask;
   }
 
   void
@@ -51,13 +57,7 @@ namespace archdam::analysis
     // The free entries, and with a prescribed boundary its entries too: the
     // balance is that of the whole model, the boundary nodes included.
     out = x;
-    m.space->constraints.set_zero(out);
-    if (m.prescribed)
-      {
-        scratch = x;
-        scratch.scale(prescribed_mask);
-        out += scratch;
-      }
+    out.scale(kept_mask);
   }
 
   void
@@ -70,7 +70,7 @@ namespace archdam::analysis
     //   (A x)_f = A_cond x_f + (A_col x_b)_f,   (A x)_b = (A_col x)_b.
     // The water's rows (Phi S in the coupled columns) are left out.
     A.vmult(out, x);
-    m.space->constraints.set_zero(out);
+    out.scale(free_mask);
     if (A_columns)
       {
         A_columns->vmult(scratch, x);
@@ -79,7 +79,7 @@ namespace archdam::analysis
         scratch = x;
         scratch.scale(prescribed_mask);
         A_columns->vmult(product, scratch);
-        m.space->constraints.set_zero(product);
+        product.scale(free_mask);
         out += product;
       }
     if (has_water)

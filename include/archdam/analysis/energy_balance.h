@@ -153,8 +153,9 @@ namespace archdam::analysis
 
     const Model m;
     const bool  has_water;
-    /// 1 at the free pressure DOFs; 1 at the prescribed DOFs.
-    Vector pressure_mask, prescribed_mask;
+    /// 1 at the unconstrained DOFs; at those and the prescribed ones; at the
+    /// free pressure DOFs; at the prescribed DOFs.
+    Vector free_mask, kept_mask, pressure_mask, prescribed_mask;
 
     /// The state after the last step (free and prescribed entries), the
     /// static state, and each force group at the last step.
