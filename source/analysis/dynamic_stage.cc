@@ -146,13 +146,6 @@ namespace archdam::analysis
             check_contact_step(contact, n * dt);
           current.time = n * dt; // no drift from repeated additions
         }
-        {
-          TimerOutput::Scope t(timer, "dynamic: energy balance");
-          energy->add_step(current,
-                           massed_foundation ? Tensor<1, dim>() :
-                                               ground_motion->acceleration(current.time),
-                           joint_solver.get());
-        }
         try
           {
             divergence.check(current, n);
@@ -172,6 +165,14 @@ namespace archdam::analysis
             write_summary();
             throw;
           }
+        {
+          // after the check: a stopped run's balance ends with its last good step
+          TimerOutput::Scope t(timer, "dynamic: energy balance");
+          energy->add_step(current,
+                           massed_foundation ? Tensor<1, dim>() :
+                                               ground_motion->acceleration(current.time),
+                           joint_solver.get());
+        }
         {
           TimerOutput::Scope t(timer, "dynamic: monitors");
           history->append(monitor->evaluate(current));
