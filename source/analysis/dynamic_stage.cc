@@ -28,6 +28,33 @@ namespace archdam::analysis
   } // namespace
 
   /**
+   * The energy balance of the dynamic stage (numerics.md §7) on the model's
+   * own operators: the solid's M, K and Rayleigh damping, the water's
+   * operators, and the foundation's boundary; from the current (static) state.
+   */
+  void
+  Simulation::start_energy_balance()
+  {
+    EnergyBalance::Model model;
+    model.space     = fe_space.get();
+    model.mass      = &mass_matrix;
+    model.stiffness = &stiffness_matrix;
+    model.rayleigh  = p.damping.rayleigh_coefficients();
+    model.newmark   = p.time_integration;
+    model.fluid     = fluid_operators.get();
+    model.density   = p.reservoir.density;
+    if (massed_foundation)
+      {
+        model.viscous    = massed_foundation->viscous_boundary();
+        model.prescribed = massed_foundation->prescribed_dofs();
+      }
+    else
+      model.influence = &influence_load;
+    energy = std::make_unique<EnergyBalance>(model);
+    energy->start(current, joint_solver.get());
+  }
+
+  /**
    * Dynamic stage (numerics.md §2 and §6, step 3): the generalized Newmark
    * scheme from the static state at rest, under F(t) = F_static - M iota a_g(t),
    * recording the monitors and the stress envelope on the dam faces every
@@ -93,6 +120,7 @@ namespace archdam::analysis
     stress_envelope->update(current.u, current.time);
     if (massed_foundation)
       massed_foundation->start(current.u);
+    start_energy_balance();
 
     Vector     load;
     fe_space->reinit(load);
@@ -137,9 +165,18 @@ namespace archdam::analysis
             summary.set("stopped/step", stop.step);
             summary.set("stopped/time [s]", stop.time);
             summary.set("stopped/last complete time [s]", (n - 1) * dt);
+            energy->add_to(summary);
             write_summary();
             throw;
           }
+        {
+          // after the check: a stopped run's balance ends with its last good step
+          TimerOutput::Scope t(timer, "dynamic: energy balance");
+          energy->add_step(current,
+                           massed_foundation ? Tensor<1, dim>() :
+                                               ground_motion->acceleration(current.time),
+                           joint_solver.get());
+        }
         {
           TimerOutput::Scope t(timer, "dynamic: monitors");
           history->append(monitor->evaluate(current));
@@ -171,6 +208,8 @@ namespace archdam::analysis
     if (pressure)
       pressure->finish();
     stress_envelope->write(p.output.directory, summary);
+    energy->add_to(summary);
+    screen << energy->line() << std::endl;
 
     summary.set("dynamic/time step [s]", dt);
     summary.set("dynamic/steps", n_steps);

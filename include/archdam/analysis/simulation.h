@@ -1,5 +1,6 @@
 #pragma once
 
+#include <archdam/analysis/energy_balance.h>
 #include <archdam/analysis/modal_analysis.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_faces.h>
@@ -132,6 +133,12 @@ namespace archdam::analysis
     {
       return joint_output.get();
     }
+    /// The energy balance of the dynamic stage (null before it ran).
+    const EnergyBalance *
+    energy_balance() const
+    {
+      return energy.get();
+    }
 
   private:
     void
@@ -166,6 +173,9 @@ namespace archdam::analysis
     /// (or flag the step) if it did not converge.
     void
     check_contact_step(const joints::ContactStep &step, double t);
+    /// The energy balance from the current state (dynamic_stage.cc).
+    void
+    start_energy_balance();
     /// Contact iterations, joint peaks and envelopes into the summary.
     void
     summarize_joints();
@@ -213,6 +223,7 @@ namespace archdam::analysis
     std::unique_ptr<joints::NodePairs>       node_pairs;
     std::unique_ptr<joints::JointSolver>     joint_solver;
     std::unique_ptr<joints::JointOutput>     joint_output;
+    std::unique_ptr<EnergyBalance>           energy;
     /// Contact iterations per dynamic step: sum, maximum; flagged steps.
     unsigned long                            contact_iterations = 0;
     unsigned int                             max_contact_iterations = 0;

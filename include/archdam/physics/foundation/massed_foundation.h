@@ -77,6 +77,12 @@ namespace archdam::physics::foundation
     {
       return mtf.get();
     }
+    /// The viscous boundary (nullptr for the prescribed ones).
+    const ViscousSpringBoundary *
+    viscous_boundary() const
+    {
+      return viscous.get();
+    }
 
   private:
     std::unique_ptr<MultiTransmittingBoundary> mtf;

@@ -1,0 +1,172 @@
+#pragma once
+
+#include <archdam/fe/fe_space.h>
+#include <archdam/joints/joint_solver.h>
+#include <archdam/output/summary.h>
+#include <archdam/physics/foundation/viscous_boundary.h>
+#include <archdam/physics/reservoir/fluid_operators.h>
+#include <archdam/time/newmark.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace archdam::analysis
+{
+  /// The terms of the energy balance of a dynamic stage [J] (numerics.md §7).
+  struct EnergyTerms
+  {
+    /// Work put into the model: the ground motion's inertia loads (relative
+    /// formulation), the free-field forces of the viscous boundary, or the net
+    /// work of the reactions on a prescribed outer boundary (MTF: input minus
+    /// radiated).
+    double input = 0.;
+    /// 1/2 v^T M v at the end.
+    double kinetic = 0.;
+    /// 1/2 w^T K w - f_s^T (B w) with w = u - u_static: the elastic energy
+    /// from the static state, and the work against the static joint forces.
+    double strain = 0.;
+    /// int v^T D v dt (Rayleigh damping).
+    double damping = 0.;
+    /// int v^T c v dt in the dashpots of the viscous boundary.
+    double radiated = 0.;
+    /// int f . dw at the joints (f the total pair forces): friction, and
+    /// the normal forces' work on the gaps,
+    double contact = 0.;
+    /// of which the normal part int f_xi dw_xi: zero in the continuous law
+    /// (a pair is closed or free of force), in the scheme the work of the
+    /// trapezoidal mean force over the steps where pairs open (released,
+    /// negative) or close (impact, positive).
+    double contact_normal = 0.;
+    /// The water's acoustic energy at the end: 1/(2 rho_w) (p^T G p + P^T Q P),
+    /// P = int p dt (potential, free-surface waves and kinetic).
+    double water = 0.;
+    /// 1/rho_w int p^T H p dt: radiated at the upstream truncation and
+    /// absorbed at the bottom.
+    double water_radiated = 0.;
+
+    /// What the model holds or lost: everything but the input.
+    double
+    sum() const
+    {
+      return kinetic + strain + damping + radiated + contact + water + water_radiated;
+    }
+    /// |input - sum| / max(|input|, sum of the magnitudes of the terms).
+    double
+    balance_error() const;
+  };
+
+  /**
+   * The energy balance of the dynamic stage (numerics.md §2 and §7): every step adds
+   * the work of each force group over the step, with the trapezoidal rule in
+   * the displacement, W += (x_{n+1} - x_n) . (F_n + F_{n+1}) / 2, the rule
+   * the Newmark scheme itself applies (with Beta1 = 1/2, Beta2 = 1/4,
+   * x_{n+1} - x_n = dt (v_n + v_{n+1}) / 2, and the equation of motion
+   * averaged over t_n, t_{n+1} multiplied by that increment is the balance
+   * of the step exactly: the sum closes to round-off for any linear model and
+   * any contact history; Beta1 > 1/2 shows its numerical dissipation as the
+   * balance error). Everything is measured from the static state the stage
+   * starts from. The water's balance uses the fluid equation integrated in
+   * time, G p_t + H p + Q P + S (u_t + iota v_g) = 0 (P = int p dt,
+   * trapezoidal), times p: its coupling work with the dam cancels the dam's.
+   * With a prescribed outer boundary (MTF) the balance is that of the whole
+   * model, the boundary nodes included (full operators from the prescribed
+   * columns), and the input is the work of the reactions there: input minus
+   * radiated, which the MTF does not separate.
+   * Cost per step: M v and K v (damping; with a prescribed boundary also its
+   * columns), H p (water), the boundary reactions, and vector operations.
+   */
+  class EnergyBalance
+  {
+  public:
+    /// What the model is made of; pointers are null where a part is absent.
+    struct Model
+    {
+      const fe::FESpace                         *space = nullptr;
+      const SparseMatrix                        *mass = nullptr, *stiffness = nullptr;
+      std::pair<double, double>                  rayleigh{0., 0.};
+      time::NewmarkParameters                    newmark;
+      /// M iota_d of the relative formulation (massless or rigid foundation).
+      const std::array<Vector, dim>             *influence = nullptr;
+      /// The water (compressible and incompressible models) and its density.
+      const physics::reservoir::FluidOperators *fluid   = nullptr;
+      double                                     density = 1000.;
+      /// Massed foundation: the viscous boundary, or the prescribed boundary.
+      const physics::foundation::ViscousSpringBoundary *viscous    = nullptr;
+      const time::PrescribedDofs                       *prescribed = nullptr;
+    };
+
+    explicit EnergyBalance(const Model &model);
+
+    /// Start from the state @p s (the static state, at rest) and the joint
+    /// forces of @p joints (if any).
+    void
+    start(const time::NewmarkState &s, const joints::JointSolver *joints);
+
+    /// Add the step to @p s, with the ground acceleration @p ag at its end
+    /// (relative formulation) and the joint state after it.
+    void
+    add_step(const time::NewmarkState   &s,
+             const dealii::Tensor<1, dim> &ag,
+             const joints::JointSolver  *joints);
+
+    /// The terms after the last step.
+    EnergyTerms
+    terms() const;
+
+    /// Into summary.json under "energy balance".
+    void
+    add_to(output::Summary &summary) const;
+
+    /// One line for the run log.
+    std::string
+    line() const;
+
+  private:
+    /// x with its constrained entries zero (the condensed matrices act on it
+    /// as the full ones on the constrained field), its prescribed entries kept.
+    void
+    free_part(const Vector &x, Vector &out) const;
+    /// The full solid operator (condensed @p A plus its prescribed
+    /// @p A_columns, if any) times x from free_part(); solid rows only.
+    void
+    full_product(const SparseMatrix &A, const SparseMatrix *A_columns, const Vector &x,
+                 Vector &out) const;
+    /// D v = alpha M v + beta K v (full operators).
+    void
+    damping_force(const Vector &v, Vector &out) const;
+    /// The reaction on the prescribed DOFs at the state @p s.
+    void
+    boundary_reaction(const time::NewmarkState &s, Vector &out);
+    const SparseMatrix *
+    mass_columns() const
+    {
+      return m.prescribed ? &m.prescribed->mass_columns : nullptr;
+    }
+    const SparseMatrix *
+    stiffness_columns() const
+    {
+      return m.prescribed ? &m.prescribed->stiffness_columns : nullptr;
+    }
+
+    const Model m;
+    const bool  has_water;
+    /// 1 at the unconstrained DOFs; at those and the prescribed ones; at the
+    /// free pressure DOFs; at the prescribed DOFs.
+    Vector free_mask, kept_mask, pressure_mask, prescribed_mask;
+
+    /// The state after the last step (free and prescribed entries), the
+    /// static state, and each force group at the last step.
+    Vector u_static, u_prev, v_prev, damping_prev, p_prev, impulse, boundary_prev,
+      boundary_static, free_field_prev, free_field_static, radiation_prev, dashpot_prev, ub_prev,
+      tmp, du, work;
+    dealii::Tensor<1, dim> ag_prev, vg;
+    std::vector<double>    f_static, w_static, f_prev, w_prev;
+    double                 t_prev = 0.;
+
+    EnergyTerms sums; ///< the path integrals (input, damping, radiated, contact, water radiated)
+    mutable Vector scratch, product, tmp2;
+  };
+} // namespace archdam::analysis

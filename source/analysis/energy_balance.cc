@@ -1,0 +1,347 @@
+#include <archdam/analysis/energy_balance.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace archdam::analysis
+{
+  using namespace dealii;
+
+  double
+  EnergyTerms::balance_error() const
+  {
+    const double magnitudes = std::abs(kinetic) + std::abs(strain) + std::abs(damping) +
+                              std::abs(radiated) + std::abs(contact) + std::abs(water) +
+                              std::abs(water_radiated);
+    const double scale = std::max(std::abs(input), magnitudes);
+    return scale > 0. ? std::abs(input - sum()) / scale : 0.;
+  }
+
+  EnergyBalance::EnergyBalance(const Model &model)
+    : m(model)
+    , has_water(model.fluid != nullptr)
+  {
+    AssertThrow(m.space && m.mass && m.stiffness,
+                ExcMessage("The energy balance needs the FE space, M and K."));
+    for (Vector *v : {&free_mask, &kept_mask, &pressure_mask, &prescribed_mask, &u_static,
+                      &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
+                      &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
+                      &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product})
+      m.space->reinit(*v);
+    if (has_water)
+      {
+        for (const auto i : physics::reservoir::free_pressure_dofs(*m.space))
+          pressure_mask(i) = 1.;
+        pressure_mask.compress(VectorOperation::insert);
+      }
+    if (m.prescribed)
+      {
+        const IndexSet owned = prescribed_mask.locally_owned_elements();
+        for (const auto i : m.prescribed->dofs)
+          if (owned.is_element(i))
+            prescribed_mask(i) = 1.;
+        prescribed_mask.compress(VectorOperation::insert);
+      }
+    // Setting constrained entries to zero one by one costs a PETSc call per
+    // entry; a pointwise product with a mask is one pass.
+    free_mask = 1.;
+    m.space->constraints.set_zero(free_mask);
+    kept_mask = free_mask;
+    kept_mask += prescribed_mask;
+  }
+
+  void
+  EnergyBalance::free_part(const Vector &x, Vector &out) const
+  {
+    // The free entries, and with a prescribed boundary its entries too: the
+    // balance is that of the whole model, the boundary nodes included.
+    out = x;
+    out.scale(kept_mask);
+  }
+
+  void
+  EnergyBalance::full_product(const SparseMatrix &A, const SparseMatrix *A_columns,
+                              const Vector &x, Vector &out) const
+  {
+    // A x for the full (unconstrained) solid operator, x from free_part():
+    // the condensed A on the free entries, and with a prescribed boundary b
+    // its columns (time::PrescribedDofs, all rows of the cells touching b):
+    //   (A x)_f = A_cond x_f + (A_col x_b)_f,   (A x)_b = (A_col x)_b.
+    // The water's rows (Phi S in the coupled columns) are left out.
+    A.vmult(out, x);
+    out.scale(free_mask);
+    if (A_columns)
+      {
+        A_columns->vmult(scratch, x);
+        scratch.scale(prescribed_mask);
+        out += scratch;
+        scratch = x;
+        scratch.scale(prescribed_mask);
+        A_columns->vmult(product, scratch);
+        product.scale(free_mask);
+        out += product;
+      }
+    if (has_water)
+      {
+        scratch = out;
+        scratch.scale(pressure_mask);
+        out -= scratch;
+      }
+  }
+
+  void
+  EnergyBalance::damping_force(const Vector &v, Vector &out) const
+  {
+    // D = alpha M + beta K (numerics.md §1); for the coupled system this is
+    // the solid's block of D_c, the water's radiation being counted apart.
+    full_product(*m.mass, mass_columns(), v, out);
+    out *= m.rayleigh.first;
+    if (m.rayleigh.second != 0.)
+      {
+        full_product(*m.stiffness, stiffness_columns(), v, tmp2);
+        out.add(m.rayleigh.second, tmp2);
+      }
+  }
+
+  void
+  EnergyBalance::boundary_reaction(const time::NewmarkState &s, Vector &out)
+  {
+    // The force the exterior applies to the prescribed DOFs b to move them:
+    // (M a + D v + K u)_b of the full operators (the water's pressure on b
+    // is counted with the water's balance below).
+    const auto [alpha, beta] = m.rayleigh;
+    free_part(s.a, work);
+    free_part(s.v, tmp2);
+    work.add(alpha, tmp2);
+    m.prescribed->mass_columns.vmult(out, work);
+    free_part(s.u, work);
+    work.add(beta, tmp2);
+    m.prescribed->stiffness_columns.vmult(tmp2, work);
+    out += tmp2;
+    out.scale(prescribed_mask);
+  }
+
+  void
+  EnergyBalance::start(const time::NewmarkState &s, const joints::JointSolver *joints)
+  {
+    free_part(s.u, u_static);
+    u_prev = u_static;
+    free_part(s.v, v_prev);
+    damping_force(v_prev, damping_prev);
+    p_prev  = 0.;
+    impulse = 0.;
+    if (has_water)
+      {
+        // The hydrodynamic pressure is measured from the start (the
+        // hydrostatic pressure is a static load).
+        p_prev = u_static;
+        p_prev.scale(pressure_mask);
+        radiation_prev = 0.;
+      }
+    if (m.prescribed)
+      {
+        boundary_reaction(s, boundary_static);
+        boundary_prev = boundary_static;
+        ub_prev       = s.u;
+        ub_prev.scale(prescribed_mask);
+      }
+    if (m.viscous)
+      {
+        dashpot_prev = v_prev;
+        dashpot_prev.scale(m.viscous->dashpots());
+        free_field_prev = 0.;
+        m.viscous->add_free_field_load(s.time, free_field_prev);
+        free_field_static = free_field_prev;
+      }
+    t_prev  = s.time;
+    ag_prev = Tensor<1, dim>();
+    vg      = Tensor<1, dim>();
+    f_static.clear();
+    w_static.clear();
+    if (joints)
+      {
+        f_static = f_prev = joints->force;
+        w_static = w_prev = joints->w;
+      }
+    sums = EnergyTerms();
+  }
+
+  void
+  EnergyBalance::add_step(const time::NewmarkState &s,
+                          const Tensor<1, dim>     &ag,
+                          const joints::JointSolver *joints)
+  {
+    const double dt = s.time - t_prev;
+    const double b1 = m.newmark.beta1, b2 = m.newmark.beta2;
+    free_part(s.u, tmp);
+    du = tmp;
+    du -= u_prev;
+    u_prev = tmp;
+    free_part(s.v, v_prev);
+
+    // Rayleigh damping: du . (D v_n + D v_{n+1}) / 2.
+    damping_force(v_prev, tmp);
+    sums.damping += 0.5 * (du * damping_prev + du * tmp);
+    damping_prev = tmp;
+
+    // Relative formulation: F = -sum_d a_g,d M iota_d (numerics.md §5), and
+    // the ground's own motion, integrated by the same Newmark rule, for the
+    // water.
+    Tensor<1, dim> dug;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        dug[d] = dt * vg[d] + dt * dt * ((0.5 - b2) * ag_prev[d] + b2 * ag[d]);
+        vg[d] += dt * ((1. - b1) * ag_prev[d] + b1 * ag[d]);
+        if (m.influence && (ag[d] != 0. || ag_prev[d] != 0.))
+          sums.input -= 0.5 * (ag_prev[d] + ag[d]) * (du * (*m.influence)[d]);
+      }
+    ag_prev = ag;
+
+    if (m.viscous)
+      {
+        // Viscous boundary (numerics.md §5): the free-field forces put the
+        // wave in, the dashpots take c (v_n + v_{n+1}) / 2 . du out.
+        tmp = 0.;
+        m.viscous->add_free_field_load(s.time, tmp);
+        sums.input += 0.5 * (du * free_field_prev + du * tmp) - du * free_field_static;
+        free_field_prev = tmp;
+        tmp             = v_prev;
+        tmp.scale(m.viscous->dashpots());
+        sums.radiated += 0.5 * (du * dashpot_prev + du * tmp);
+        dashpot_prev = tmp;
+      }
+
+    if (m.prescribed)
+      {
+        // Work of the reactions on the prescribed boundary (MTF: input minus
+        // radiated), from the static state.
+        boundary_reaction(s, tmp);
+        sums.input += 0.5 * (du * boundary_prev + du * tmp) - du * boundary_static;
+        boundary_prev = tmp;
+      }
+
+    if (has_water)
+      {
+        // The water's balance (the integrated fluid equation times p):
+        //   dE_w + (1/rho) dP . H p_mid = -(1/rho) p_mid . S (du + iota du_g),
+        // dP = dt p_mid (trapezoidal); the part with du cancels the work of
+        // -(1/rho) S^T p on the dam, so only the ground's part is input.
+        const double rho = m.density;
+        tmp              = s.u;
+        tmp -= u_static;
+        tmp.scale(pressure_mask); // p_{n+1}
+        tmp2 = p_prev;
+        tmp2 += tmp; // p_n + p_{n+1} = 2 p_mid
+        impulse.add(0.5 * dt, tmp2);
+        m.fluid->H.vmult(work, tmp);
+        sums.water_radiated += 0.25 * dt / rho * (tmp2 * radiation_prev + tmp2 * work);
+        radiation_prev = work;
+        p_prev         = tmp;
+        if (m.influence)
+          for (unsigned int d = 0; d < dim; ++d)
+            if (dug[d] != 0.)
+              sums.input -= 0.5 / rho * dug[d] * (tmp2 * m.fluid->influence[d]);
+        if (m.prescribed)
+          {
+            // The boundary moves the wetted rock under the water (the
+            // constrained S has no columns at b): the fluid rows of the
+            // prescribed mass columns are Phi S(:, b), Phi = -beta2 dt^2 / rho
+            // (reservoir/coupled_system.h), so
+            // -(1/rho) p_mid . S_b du_b = p_mid . (Mcol du_b) / (beta2 dt^2).
+            tmp = s.u;
+            tmp.scale(prescribed_mask);
+            du = tmp;
+            du -= ub_prev;
+            ub_prev = tmp;
+            m.prescribed->mass_columns.vmult(work, du);
+            sums.input += 0.5 / (b2 * dt * dt) * (tmp2 * work);
+          }
+      }
+
+    if (joints)
+      {
+        // The joints absorb f . dw (the load on the dam is -B^T f, numerics.md §3).
+        for (unsigned int k = 0; k < f_prev.size(); ++k)
+          {
+            const double work_k =
+              0.5 * (joints->force[k] + f_prev[k]) * (joints->w[k] - w_prev[k]);
+            sums.contact += work_k;
+            if (k % dim == 0) // xi, the normal of the pair's frame
+              sums.contact_normal += work_k;
+          }
+        f_prev = joints->force;
+        w_prev = joints->w;
+      }
+    t_prev = s.time;
+  }
+
+  EnergyTerms
+  EnergyBalance::terms() const
+  {
+    EnergyTerms e = sums;
+    Vector      w(u_prev), Ax(u_prev);
+    full_product(*m.mass, mass_columns(), v_prev, Ax);
+    e.kinetic = 0.5 * (Ax * v_prev);
+    w -= u_static;
+    full_product(*m.stiffness, stiffness_columns(), w, Ax);
+    e.strain = 0.5 * (Ax * w);
+    for (unsigned int k = 0; k < f_static.size(); ++k)
+      e.strain -= f_static[k] * (w_prev[k] - w_static[k]);
+    if (has_water)
+      {
+        m.fluid->G.vmult(Ax, p_prev);
+        e.water = 0.5 / m.density * (Ax * p_prev);
+        m.fluid->Q.vmult(Ax, impulse);
+        e.water += 0.5 / m.density * (Ax * impulse);
+      }
+    return e;
+  }
+
+  void
+  EnergyBalance::add_to(output::Summary &summary) const
+  {
+    const EnergyTerms e = terms();
+    const std::string s = "energy balance/";
+    summary.set(s + "input work [J]", e.input);
+    summary.set(s + "kinetic energy [J]", e.kinetic);
+    summary.set(s + "strain energy [J]", e.strain);
+    summary.set(s + "damping dissipation [J]", e.damping);
+    summary.set(s + "radiated energy [J]", e.radiated);
+    summary.set(s + "contact dissipation [J]", e.contact);
+    if (!f_static.empty())
+      summary.set(s + "contact dissipation, normal part [J]", e.contact_normal);
+    if (has_water)
+      {
+        summary.set(s + "water energy [J]", e.water);
+        summary.set(s + "water radiated energy [J]", e.water_radiated);
+      }
+    summary.set(s + "balance error", e.balance_error());
+    if (m.prescribed)
+      summary.set(s + "note", "the input work is the net work of the prescribed outer "
+                              "boundary (MTF): input minus radiated");
+  }
+
+  std::string
+  EnergyBalance::line() const
+  {
+    const EnergyTerms  e = terms();
+    std::ostringstream out;
+    out << std::setprecision(4) << "Energy balance: input " << e.input << " J = kinetic "
+        << e.kinetic << " + strain " << e.strain << " + damping " << e.damping;
+    if (m.viscous)
+      out << " + radiated " << e.radiated;
+    if (!f_static.empty())
+      out << " + contact " << e.contact;
+    if (has_water)
+      out << " + water " << e.water << " + water radiated " << e.water_radiated;
+    // Round-off differs between runs on different numbers of processes: a
+    // closed balance is printed as such.
+    const double error = e.balance_error();
+    if (error < 1e-9)
+      out << " J; balance error below 1e-9";
+    else
+      out << " J; balance error " << std::setprecision(2) << error;
+    return out.str();
+  }
+} // namespace archdam::analysis

@@ -1,0 +1,138 @@
+// Contact dissipation in the energy balance (analysis/energy_balance.h;
+// verification.md, "Whole system" and "Joints"): the rigid-block case of
+// joint_sliding. A stiff block (1 m cube, rho = 2400 kg/m^3) on a joint over
+// a fixed base block, Coulomb friction mu = 0.2 without cohesion, settles
+// under its weight, then a rectangular ground pulse A g = 0.5 g for t0 =
+// 0.1 s in x (relative formulation) makes it slide, and friction stops it.
+//
+// References, written here independently of the program:
+//  - the joint dissipates mu N times the slip: N = m g the weight, the slip
+//    the FE block's (it slides one way only); within 0.5 % (the normal
+//    force varies by the block's rocking, the pair forces are averaged by
+//    the trapezoidal rule);
+//  - the rigid block (Newmark 1965): the ground puts in
+//    W = m A g (A - mu) g t0^2 / 2 while the block slides during the pulse,
+//    and all of it goes into friction once the block is at rest again
+//    (mu m g times the permanent slip V^2/(2 g mu)(1 - mu/A), V = A g t0):
+//    the input work and the contact dissipation within 2 % (joint_sliding's
+//    tolerance on the slip: dt / (2 t0) = 0.5 % at the pulse ends, the
+//    first-order Beta1 = 0.6 at the stick/slip transitions);
+//  - the balance input = kinetic + strain + damping + contact does not close
+//    exactly with Beta1 = 0.6: the scheme dissipates (Beta1 - 1/2) dv^T M dv
+//    per step of its own (the discrete energy identity of Newmark's method;
+//    the Beta2 - Beta1/2 = 0.0025 term acts on the acceleration jumps only),
+//    which for the rigid block, sliding with s'' = -(A - mu) g during the
+//    pulse and s'' = mu g until it stops at t0 (A - mu) / mu later, is
+//    (Beta1 - 1/2) m dt [((A - mu) g)^2 t0 + (mu g)^2 t0 (A - mu) / mu]:
+//    the gap input - sum must match it within 5 % (the pulse ends, the
+//    block's own vibration).
+// The balance measured without the contact term must be open (> 50 %).
+
+#include <archdam/analysis/energy_balance.h>
+
+#include "archdam_tests.h"
+#include "joint_tests.h"
+
+using namespace dealii;
+using namespace archdam;
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  constexpr double g = 9.81, rho = 2400., m = rho, mu = 0.2, A = 0.5, t0 = 0.1, dt = 1e-3;
+  const double     settle = 0.05, end = 0.4;
+
+  testing::BlockModel model(2, 2, Point<dim>(1., 1., 2.), 1, 1, 1e11, 0.2, rho, {0});
+  archdam::Vector     gravity;
+  std::array<archdam::Vector, dim> iota;
+  physics::solid::assemble_inertia_load(*model.space, model.materials,
+                                        physics::solid::InertiaOf::dam,
+                                        -g * Point<dim>::unit_vector(2), gravity);
+  for (unsigned int d = 0; d < dim; ++d)
+    physics::solid::assemble_inertia_load(*model.space, model.materials,
+                                          physics::solid::InertiaOf::dam,
+                                          Point<dim>::unit_vector(d), iota[d]);
+  joints::JointParameters jp;
+  jp.model                    = "frictional contact";
+  jp.law.friction_coefficient = mu;
+  jp.law.cohesion = jp.law.residual_cohesion = 0.;
+
+  time::NewmarkParameters np;
+  np.time_step = dt;
+  np.beta1     = 0.6; // damps the block's bouncing while it settles
+  np.beta2     = 0.3025;
+  time::NewmarkIntegrator newmark(np, model.M, model.K, {0., 0.}, model.space->constraints);
+  auto solver = joints::make_joint_solver(jp, *model.pairs, newmark.displacement_factor(),
+                                          newmark.effective(), newmark.effective_factor());
+  time::NewmarkState s;
+  archdam::Vector    load;
+  for (archdam::Vector *v : {&s.u, &s.v, &s.a, &load})
+    model.space->reinit(*v);
+
+  analysis::EnergyBalance::Model em;
+  em.space     = model.space.get();
+  em.mass      = &model.M;
+  em.stiffness = &model.K;
+  em.newmark   = np;
+  em.influence = &iota;
+  analysis::EnergyBalance balance(em);
+
+  const auto slip = [&] { // mean x component of w over the pairs
+    double sum = 0.;
+    for (unsigned int i = 0; i < model.pairs->size(); ++i)
+      for (unsigned int k = 0; k < dim; ++k)
+        sum += solver->w[dim * i + k] * (*model.pairs)[i].frame[k][0];
+    return sum / model.pairs->size();
+  };
+  const unsigned int n_settle = std::lround(settle / dt), n = std::lround(end / dt);
+  double             slip_at_rest = 0.;
+  for (unsigned int k = 1; k <= n_settle + n; ++k)
+    {
+      const double t  = (k - double(n_settle)) * dt;
+      const double ag = k > n_settle && t <= t0 + 1e-12 ? A * g : 0.;
+      load            = gravity;
+      load.add(-ag, iota[0]);
+      const auto step = joints::advance_with_contact(newmark, *solver, load, s);
+      AssertThrow(step.converged, ExcMessage(solver->describe(step)));
+      if (k == n_settle)
+        {
+          // The settled block is the static state of the balance.
+          balance.start(s, solver.get());
+          slip_at_rest = slip();
+        }
+      else if (k > n_settle)
+        {
+          Tensor<1, dim> ground;
+          ground[0] = ag;
+          balance.add_step(s, ground, solver.get());
+        }
+    }
+
+  const auto   e          = balance.terms();
+  const double fe_slip    = std::abs(slip() - slip_at_rest);
+  const double V          = A * g * t0;
+  const double rigid_slip = V * V / (2 * g * mu) * (1 - mu / A);
+  const double rigid_work = m * A * g * (A - mu) * g * t0 * t0 / 2;
+  auto        &log        = testing::log();
+  log << "block sliding under a rectangular pulse, A = " << A << ", t0 = " << t0
+      << " s, mu = " << mu << std::endl;
+  testing::check_relative("  contact dissipation [J] against mu m g x FE slip", e.contact,
+                          mu * m * g * fe_slip, 5e-3);
+  testing::check_relative("  contact dissipation [J] against the rigid block (mu m g x slip)",
+                          e.contact, mu * m * g * rigid_slip, 0.02);
+  testing::check_relative("  input work [J] against the rigid block", e.input, rigid_work, 0.02);
+  const double t_stop = t0 * (A - mu) / mu;
+  const double numerical =
+    (np.beta1 - 0.5) * m * dt *
+    (std::pow((A - mu) * g, 2) * t0 + std::pow(mu * g, 2) * t_stop);
+  testing::check_relative("  balance gap input - sum [J] against the scheme's dissipation",
+                          e.input - e.sum(), numerical, 0.05);
+  auto without = e;
+  without.contact = 0.;
+  log << "  balance without the contact term open by more than 50 %: "
+      << (without.balance_error() > 0.5 ? "yes" : "NO") << std::endl;
+  if (std::getenv("ENERGY_BALANCE_NUMBERS")) // the terms, for the verification report
+    std::cerr << "balance error " << e.balance_error() << " kinetic " << e.kinetic << " strain "
+            << e.strain << " contact " << e.contact << " input " << e.input << std::endl;
+}
