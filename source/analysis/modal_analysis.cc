@@ -57,17 +57,23 @@ namespace archdam::analysis
     /**
      * The lowest eigenpairs of K x = lambda M x (shift-and-invert about 0),
      * each normalized by @p solid_mass (x^T M_s x = 1): Hermitian (M_s = M,
-     * Cholesky) or not (LU). The constrained rows of M and M_s and the rows
-     * without stiffness lose their mass, see compute_natural_modes().
+     * Cholesky) without @p water_rows, else non-Hermitian (LU), with
+     * @p water_rows 1 on the rows of the water's pressure and 0 elsewhere.
+     * The constrained rows of M and M_s and the rows without stiffness lose
+     * their mass, see compute_natural_modes(). The residual is taken relative
+     * to |K x| over the solid's rows and over the water's rows separately:
+     * displacements [m] and pressures [Pa] differ by orders of magnitude, and
+     * one norm over both would measure only the water.
      */
     NaturalModes
     lowest_modes(const SparseMatrix              &stiffness,
                  const SparseMatrix              &mass,
                  const SparseMatrix              &solid_mass,
-                 const bool                       hermitian,
+                 const Vector                    *water_rows,
                  const AffineConstraints<double> &constraints,
                  const ModalParameters           &p)
     {
+      const bool hermitian = water_rows == nullptr;
       Objects o;
       check(MatDuplicate(static_cast<Mat>(stiffness), MAT_COPY_VALUES, &o.K), "MatDuplicate");
       check(MatDuplicate(static_cast<Mat>(mass), MAT_COPY_VALUES, &o.M), "MatDuplicate");
@@ -75,6 +81,11 @@ namespace archdam::analysis
         check(MatDuplicate(static_cast<Mat>(solid_mass), MAT_COPY_VALUES, &o.Ms),
               "MatDuplicate");
       const Mat normalization = hermitian ? o.M : o.Ms;
+      // A symmetric K factorized in the static stage carries PETSc's symmetry
+      // flag, which the coupled matrices would inherit.
+      if (!hermitian)
+        for (Mat A : {o.K, o.M})
+          check(MatSetOption(A, MAT_SYMMETRIC, PETSC_FALSE), "MatSetOption");
       check(MatCreateVecs(o.K, &o.x, &o.y), "MatCreateVecs");
       check(VecDuplicate(o.x, &o.d), "VecDuplicate");
 
@@ -152,6 +163,19 @@ namespace archdam::analysis
           // The coupled pencil's eigenvalues are real in exact arithmetic.
           AssertThrow(std::abs(lambda_imag) <= 1e-6 * lambda,
                       ExcMessage("Modal analysis: complex eigenvalue of the coupled system."));
+          // Purification: SLEPc purifies only in the Hermitian case. A Ritz
+          // vector keeps components of the starting vector in the null space
+          // of M (constrained rows, massless rock, the water's rows without
+          // G), which belong to the infinite eigenvalues; K^-1 M annihilates
+          // them (twice for the incompressible water, whose infinite
+          // eigenvalues come in 2x2 Jordan blocks) and maps the eigenvector
+          // to itself times 1/lambda.
+          if (!hermitian)
+            for (unsigned int twice = 0; twice < 2; ++twice)
+              {
+                check(STApply(st, o.x, o.y), "STApply");
+                check(VecCopy(o.y, o.x), "VecCopy");
+              }
           // Mass-normalize with the condensed (solid) mass matrix, and fix the
           // sign so that the largest component is positive (the same on any
           // number of processes).
@@ -173,15 +197,38 @@ namespace archdam::analysis
       NaturalModes modes;
       for (auto &[lambda, shape] : pairs)
         {
-          // Residual of K x = lambda M x, relative to |K x|.
+          // Residual of K x = lambda M x, relative to |K x|, per block.
           check(VecCopy(static_cast<const Vec &>(shape), o.x), "VecCopy");
-          PetscReal r, k_norm;
           check(MatMult(o.K, o.x, o.y), "MatMult");
-          check(VecNorm(o.y, NORM_2, &k_norm), "VecNorm");
           check(MatMult(o.M, o.x, o.d), "MatMult");
-          check(VecAXPY(o.y, -lambda, o.d), "VecAXPY");
-          check(VecNorm(o.y, NORM_2, &r), "VecNorm");
-          modes.max_residual = std::max(modes.max_residual, r / k_norm);
+          check(VecAYPX(o.d, -lambda, o.y), "VecAYPX"); // d = K x - lambda M x
+          for (const double block : {0., 1.})
+            {
+              if (hermitian && block == 1.)
+                break;
+              PetscReal r, k_norm;
+              if (!hermitian) // keep the rows of this block only
+                {
+                  Vector in_block(*water_rows);
+                  if (block == 0.)
+                    {
+                      in_block *= -1.;
+                      in_block.add(1.);
+                    }
+                  const Vec mask = static_cast<const Vec &>(in_block);
+                  check(VecPointwiseMult(o.x, o.y, mask), "VecPointwiseMult");
+                  check(VecNorm(o.x, NORM_2, &k_norm), "VecNorm");
+                  check(VecPointwiseMult(o.x, o.d, mask), "VecPointwiseMult");
+                  check(VecNorm(o.x, NORM_2, &r), "VecNorm");
+                }
+              else
+                {
+                  check(VecNorm(o.y, NORM_2, &k_norm), "VecNorm");
+                  check(VecNorm(o.d, NORM_2, &r), "VecNorm");
+                }
+              if (k_norm > 0.)
+                modes.max_residual = std::max(modes.max_residual, r / k_norm);
+            }
 
           modes.omega.push_back(std::sqrt(lambda));
           modes.shapes.push_back(std::move(shape));
@@ -196,7 +243,7 @@ namespace archdam::analysis
                         const AffineConstraints<double> &constraints,
                         const ModalParameters           &p)
   {
-    return lowest_modes(stiffness, mass, mass, true, constraints, p);
+    return lowest_modes(stiffness, mass, mass, nullptr, constraints, p);
   }
 
   NaturalModes
@@ -213,7 +260,13 @@ namespace archdam::analysis
                                       {-1. / water_density, &water.S_transpose},
                                       {1., &water.Q}});
     reservoir::linear_combination(B, {{1., &mass}, {1., &water.S}, {1., &water.G}});
-    return lowest_modes(A, B, mass, false, constraints, p);
+    // The water's rows: those of Q (the Laplacian has a positive diagonal on
+    // every pressure DOF, and nothing on the solid's).
+    Vector water_rows(water.Q.locally_owned_range_indices(), water.Q.get_mpi_communicator());
+    for (const auto i : water.Q.locally_owned_range_indices())
+      water_rows(i) = water.Q.diag_element(i) != 0. ? 1. : 0.;
+    water_rows.compress(VectorOperation::insert);
+    return lowest_modes(A, B, mass, &water_rows, constraints, p);
   }
 
   std::array<double, dim>
