@@ -251,6 +251,7 @@ namespace archdam::analysis
                         const SparseMatrix                       &stiffness,
                         const physics::reservoir::FluidOperators &water,
                         const double                              water_density,
+                        const double                              pressure_scale,
                         const AffineConstraints<double>          &constraints,
                         const ModalParameters                    &p)
   {
@@ -262,12 +263,46 @@ namespace archdam::analysis
     reservoir::linear_combination(B, {{1., &mass}, {1., &water.S}, {1., &water.G}});
     // The water's rows: those of Q (the Laplacian has a positive diagonal on
     // every pressure DOF, and nothing on the solid's).
-    Vector water_rows(water.Q.locally_owned_range_indices(), water.Q.get_mpi_communicator());
-    for (const auto i : water.Q.locally_owned_range_indices())
-      water_rows(i) = water.Q.diag_element(i) != 0. ? 1. : 0.;
+    const auto &owned = water.Q.locally_owned_range_indices();
+    const auto  comm  = water.Q.get_mpi_communicator();
+    Vector      water_rows(owned, comm);
+    double      solid_diagonal = 0., water_diagonal = 0.;
+    for (const auto i : owned)
+      {
+        const double q = water.Q.diag_element(i);
+        water_rows(i)  = q != 0. ? 1. : 0.;
+        (q != 0. ? water_diagonal : solid_diagonal) += std::abs(A.diag_element(i));
+      }
     water_rows.compress(VectorOperation::insert);
-    return lowest_modes(A, B, mass, &water_rows, constraints, p);
+    const double n_water = water_rows.l1_norm(); // collective: every rank's rows
+    const double n_all   = static_cast<double>(A.m());
+    solid_diagonal       = Utilities::MPI::sum(solid_diagonal, comm) / (n_all - n_water);
+    water_diagonal       = Utilities::MPI::sum(water_diagonal, comm) / n_water;
+
+    // Balance the pencil: p = s p~ with s = @p pressure_scale makes the
+    // eigenvector's pressures comparable with its displacements (else they
+    // are ~1e8 times larger and the Krylov solve and its convergence test
+    // see the water only), and the water's rows are scaled by t so that
+    // their diagonal matches the solid's (else the LU factorization's and
+    // SLEPc's errors, relative to the largest entries, swamp the water's
+    // equations). Row scaling leaves the eigenpairs unchanged, the column
+    // scaling the eigenvalues; the shapes are scaled back.
+    const double t = solid_diagonal / (water_diagonal * pressure_scale);
+    Vector       rows(water_rows), columns(water_rows);
+    rows *= t - 1.;
+    rows.add(1.);
+    columns *= pressure_scale - 1.;
+    columns.add(1.);
+    for (SparseMatrix *matrix : {&A, &B})
+      check(MatDiagonalScale(matrix->petsc_matrix(), static_cast<const Vec &>(rows),
+                             static_cast<const Vec &>(columns)),
+            "MatDiagonalScale");
+    NaturalModes modes = lowest_modes(A, B, mass, &water_rows, constraints, p);
+    for (auto &shape : modes.shapes)
+      shape.scale(columns);
+    return modes;
   }
+
 
   std::array<double, dim>
   participation_factors(const Vector &shape, const std::array<Vector, dim> &mass_times_iota)

@@ -23,9 +23,17 @@ namespace archdam::analysis
   {
     {
       TimerOutput::Scope t(timer, "modal");
+      // Pressure per unit displacement of a mode at about 3 Hz, the order of
+      // an arch dam's lowest frequencies (only used to balance the pencil).
+      const double omega_0        = 2. * numbers::PI * 3.;
+      const double pressure_scale = fluid_operators ?
+                                      p.reservoir.density * omega_0 * omega_0 *
+                                        physics::reservoir::water_level(p.reservoir, triangulation) :
+                                      0.;
       modes = fluid_operators ?
                 compute_coupled_modes(mass_matrix, stiffness_matrix, *fluid_operators,
-                                      p.reservoir.density, fe_space->constraints, p.modal) :
+                                      p.reservoir.density, pressure_scale,
+                                      fe_space->constraints, p.modal) :
                 compute_natural_modes(mass_matrix, stiffness_matrix, fe_space->constraints,
                                       p.modal);
     }

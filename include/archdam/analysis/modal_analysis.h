@@ -65,13 +65,17 @@ namespace archdam::analysis
    * non-Hermitian problem (Krylov-Schur, shift-and-invert about 0 with an
    * LU factorization of A by MUMPS). Each shape is normalized by the solid's
    * mass, u^T M u = 1, so participation_factors() give the solid's share;
-   * max_residual is |A x - omega^2 B x| / |A x|.
+   * max_residual is |A x - omega^2 B x| / |A x| over the solid's and the
+   * water's rows separately. @p pressure_scale [Pa/m] is the order of the
+   * modes' pressure per unit displacement, rho_w omega^2 H_w (Westergaard),
+   * used to balance the pencil; a factor 10 off does not matter.
    */
   NaturalModes
   compute_coupled_modes(const SparseMatrix                           &mass,
                         const SparseMatrix                           &stiffness,
                         const physics::reservoir::FluidOperators     &water,
                         double                                        water_density,
+                        double                                        pressure_scale,
                         const dealii::AffineConstraints<double>      &constraints,
                         const ModalParameters                        &p);
 
