@@ -10,15 +10,16 @@ for a .vtu file, exactly as ParaView opens them. Checks:
   - every dataset loads without a VTK error, with the expected number of
     pieces, cells and points, and every expected point-data array with its
     number of components and one tuple per point;
-  - optional value checks against closed forms (--column, --joint-plane,
-    --water), described at each function below.
+  - optional: the set of material ids over all points (--materials), and
+    value checks against closed forms (--column, --joint-plane, --water),
+    described at each function below.
 Prints one verdict per check ("...: yes" or "...: NO") and nothing that
 depends on the number of MPI processes; exits 1 if VTK is missing.
 
 usage: vtk_output.py SERIES.pvd --cells N --points N --pieces N
                      --times T0,T1,... --arrays NAME:COMPONENTS,...
-                     [--column H,RHO,G,E,DT] [--joint-plane Y,RHO,G,H]
-                     [--water]
+                     [--materials ID,...] [--column H,RHO,G,E,DT]
+                     [--joint-plane Y,RHO,G,H] [--water]
 """
 
 import argparse
