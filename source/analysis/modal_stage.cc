@@ -24,7 +24,9 @@ namespace archdam::analysis
     {
       TimerOutput::Scope t(timer, "modal");
       // Pressure per unit displacement of a mode at about 3 Hz, the order of
-      // an arch dam's lowest frequencies (only used to balance the pencil).
+      // an arch dam's lowest frequencies, only used to balance the pencil:
+      // on the arch dam with compressible water 100 times more or less gives
+      // the same frequencies (5 digits) and residuals below 1e-9 (4e-12).
       const double omega_0        = 2. * numbers::PI * 3.;
       const double pressure_scale = fluid_operators ?
                                       p.reservoir.density * omega_0 * omega_0 *
