@@ -11,6 +11,7 @@ packages=(
   libopenblas0-pthread            # 3-5x faster factorization than reference BLAS
   numdiff                         # test output comparison
   python3-matplotlib              # plots (/usr/bin/python3)
+  python3-vtk9                    # VTK's readers: the vtk_output test opens the results as ParaView does
   clang libclang-rt-14-dev        # fuzz targets (libFuzzer, sanitizers) in the test suite
 )
 
