@@ -35,8 +35,8 @@
 // - Kbar factorized once in each run (one call of "dynamic: factorization").
 
 #include <archdam/analysis/simulation.h>
-#include <archdam/geometry/arch_dam.h>
 
+#include "arch_dam_water_case.h"
 #include "archdam_tests.h"
 
 using namespace dealii;
@@ -47,65 +47,7 @@ namespace
   std::string
   model(const std::string &foundation)
   {
-    const geometry::ArchDamGeometry dam{geometry::ArchDamParameters{}};
-    std::ostringstream              heel;
-    heel << dam.crown_upstream_face(1.) - 0.5 << ", 0, 1";
-    return R"(
-subsection Mesh
-  set Source = arch dam
-  subsection Arch dam
-    set Number of blocks = 4
-    set Cells across each block = 1
-    set Cells through thickness = 1
-    set Cells over height = 3
-    set Rock cell size = 120
-    set Water cell size = 100
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Foundation
-  set Model = )" + foundation + R"(
-end
-subsection Reservoir
-  set Model = compressible
-  set Bottom reflection coefficient = 0.8
-  set Pressure points = heel: )" + heel.str() + R"(
-end
-subsection Contraction joints
-  set Model = frictional contact
-  set Friction coefficient = 1
-  set Cohesion = 0
-  set On non-convergence = stop
-  set Monitor points = crown: 5, 0, 234
-end
-subsection Damping
-  set Mode = damping ratio
-  set Damping ratio = 0.05
-  set First frequency = 2
-  set Second frequency = 15
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 3
-end
-subsection Ground motion
-  subsection Component x
-    set File = )" SOURCE_DIR R"(/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2
-  end
-end
-subsection Monitors
-  set Points = crest: 5, 0, 234; base: 24, 0, 1
-  set Quantities = displacement
-end
-subsection Output
-  set Directory = results_water_)" + foundation + R"(
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
+    return testing::arch_dam_water_case(foundation, "results_water_" + foundation);
   }
 
   struct Response
