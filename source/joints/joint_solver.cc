@@ -90,6 +90,7 @@ namespace archdam::joints
   JointSolver::start_directions()
   {
     direction.assign(pairs.size(), Tensor<1, dim>());
+    slip_ratio.assign(pairs.size(), 0.);
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const double t = std::hypot(force_committed[dim * i + 1], force_committed[dim * i + 2]);
@@ -135,6 +136,7 @@ namespace archdam::joints
               damaged[i] = true;
               d[1]       = f[1] / t;
               d[2]     = f[2] / t;
+              slip_ratio[i] = 0.;
               return true;
             }
           return false;
@@ -158,8 +160,9 @@ namespace archdam::joints
             const double misfit = std::hypot(s1 - along * d[1], s2 - along * d[2]);
             if (q > 0)
               {
-                d[1] = q1 / q;
-                d[2] = q2 / q;
+                d[1]          = q1 / q;
+                d[2]          = q2 / q;
+                slip_ratio[i] = std::min(1., tau / q);
               }
             return misfit > p.gap_tolerance || along < -p.gap_tolerance;
           }

@@ -108,9 +108,19 @@ namespace archdam::joints
   void
   MixedJointSolver::solve_with_fixed_states()
   {
-    // The law with the states and directions fixed is linear in the forces
-    // of the closed pairs (numerics.md §3): stick: w = w_target in all three
-    // directions; slip: w_xi = -delta_0 and f_t = (c A - mu f_xi) d.
+    // The law with the states fixed and the slip directions linearized is
+    // linear in the forces of the closed pairs (numerics.md §3): stick:
+    // w = w_target in all three directions; slip: w_xi = -delta_0 and the
+    // semi-smooth Newton step of f_t = tau(f_xi) q / |q|, q = f_t + r dw_t
+    // (Alart-Curnier; Hueber, Stadler and Wohlmuth 2008): about the last
+    // iterate, with d = q / |q|, P = I - d d^T (tangent plane) and
+    // kappa = tau / |q|,
+    //   (I - kappa P) f_t - kappa r P dw_t(f) + mu d f_xi = c A d.
+    // With kappa = 0 (a pair that has just started to slip) this is the
+    // fixed-direction law f_t = (c A - mu f_xi) d; with kappa > 0 the
+    // direction converges with the forces instead of by a damped
+    // fixed-point iteration, which needed hundreds of iterations when the
+    // slip increment is small against tau / r.
     const unsigned int        m = dim * pairs.size();
     std::vector<unsigned int> closed;
     for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -124,12 +134,18 @@ namespace archdam::joints
     const bool same = factorized && state == factor_states &&
                       [&] {
                         for (unsigned int i = 0; i < pairs.size(); ++i)
-                          if (state[i] == PairState::slip && direction[i] != factor_directions[i])
+                          if (state[i] == PairState::slip &&
+                              (direction[i] != factor_directions[i] ||
+                               slip_ratio[i] != factor_ratios[i]))
                             return false;
                         return true;
                       }();
     if (!same)
       factor.reinit(n, n);
+    const auto flexibility = [&](const unsigned int b, const unsigned int l,
+                                 const unsigned int i, const unsigned int k) {
+      return h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+    };
     for (unsigned int a = 0; a < closed.size(); ++a)
       {
         const unsigned int i = closed[a];
@@ -138,22 +154,37 @@ namespace archdam::joints
             const unsigned int row = dim * a + k;
             if (k > 0 && state[i] == PairState::slip)
               {
-                // f_k - (c A - mu f_xi) d_k = 0
-                const auto strength_i = strength(i);
+                const auto     strength_i = strength(i);
+                const double   kappa      = slip_ratio[i], r = augmentation[i];
+                const auto    &d          = direction[i];
+                const auto     P          = [&](const unsigned int k1, const unsigned int k2) {
+                  return (k1 == k2 ? 1. : 0.) - d[k1] * d[k2];
+                };
+                // The row divided by r: in metres like the other rows, so
+                // that the LU's pivoting sees rows of one scale.
                 if (!same)
                   {
-                    factor(row, row)     = 1.;
-                    factor(row, dim * a) = strength_i.friction * direction[i][k];
+                    // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - w_committed,t
+                    if (kappa > 0.)
+                      for (unsigned int b = 0; b < closed.size(); ++b)
+                        for (unsigned int l = 0; l < dim; ++l)
+                          factor(row, dim * b + l) =
+                            kappa *
+                            (P(k, 1) * flexibility(b, l, i, 1) + P(k, 2) * flexibility(b, l, i, 2));
+                    for (const unsigned int l : {1u, 2u})
+                      factor(row, dim * a + l) += ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
+                    factor(row, dim * a) += strength_i.friction * d[k] / r;
                   }
-                f(row) = strength_i.cohesion_force * direction[i][k];
+                f(row) = strength_i.cohesion_force * d[k] / r;
+                for (const unsigned int l : {1u, 2u})
+                  f(row) += kappa * P(k, l) * (s[dim * i + l] - w_committed[dim * i + l]);
                 continue;
               }
             // (h C f)_ik = s_ik - w_target,k
             if (!same)
               for (unsigned int b = 0; b < closed.size(); ++b)
                 for (unsigned int l = 0; l < dim; ++l)
-                  factor(row, dim * b + l) =
-                    h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+                  factor(row, dim * b + l) = flexibility(b, l, i, k);
             f(row) = s[dim * i + k] - (k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k]);
           }
       }
@@ -165,6 +196,7 @@ namespace archdam::joints
             factorized        = true;
             factor_states     = state;
             factor_directions = direction;
+            factor_ratios     = slip_ratio;
           }
         factor.solve(f);
       }

@@ -94,8 +94,7 @@ namespace archdam::joints
      * tolerance (relative), the slip direction then along f_t; slip -> stick
      * when the augmented tangential force q = f_t + r dw_t (Alart-Curnier,
      * r = augmentation, dw_t the slip increment) falls inside the capacity,
-     * else the slip direction becomes q / |q| (a damped update: the
-     * direction moves towards the slip increment by the step r). The
+     * else the slip direction becomes q / |q| and slip_ratio tau / |q|. The
      * tolerance bands keep a pair exactly at the stick/slip limit from
      * switching back and forth. Returns whether the state changed or, in
      * slip, the slip increment is not along the direction (by more than Gap
@@ -108,6 +107,10 @@ namespace archdam::joints
     std::vector<double> augmentation;
     /// Unit tangential slip direction of every slipping pair (local frame).
     std::vector<dealii::Tensor<1, dim>> direction;
+    /// kappa = tau / |q| of every slipping pair at its last update (0 when it
+    /// has just started to slip): the weight of the direction's own change
+    /// in the semi-smooth Newton step of a slipping pair (MixedJointSolver).
+    std::vector<double> slip_ratio;
     /// Slip directions from the committed tangential forces.
     void
     start_directions();
@@ -126,9 +129,10 @@ namespace archdam::joints
    * only if a force changed).
    * The contact problem w = s - h C f with the law at every pair is solved
    * by an active-set (semi-smooth Newton) iteration: with the states and
-   * slip directions fixed, the law is linear in f (stick: w = w_target in
-   * all three directions; slip: w_xi = -delta_0 and f_t = (c A - mu f_xi) d;
-   * separation: f = 0), a dense system on the forces of the closed pairs
+   * slip directions linearized, the law is linear in f (stick: w = w_target
+   * in all three directions; slip: w_xi = -delta_0 and the Newton step of
+   * f_t = (c A - mu f_xi) q / |q|, see solve_with_fixed_states(); separation:
+   * f = 0), a dense system on the forces of the closed pairs
    * solved by LU; then update_state() on every pair; repeat until no state
    * or direction changes. All pairs are coupled through C at once, so a
    * rigid block on several pairs stops or slides as a whole (a pair-by-pair
@@ -184,6 +188,7 @@ namespace archdam::joints
     bool                                 factorized = false;
     std::vector<PairState>               factor_states;
     std::vector<dealii::Tensor<1, dim>>  factor_directions;
+    std::vector<double>                  factor_ratios;
     Vector              rhs, correction;
   };
 
