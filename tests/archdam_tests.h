@@ -7,8 +7,10 @@
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -50,5 +52,24 @@ namespace archdam::testing
     const bool ok = value < tol;
     log() << what << " below " << tol << ": " << (ok ? "yes" : "NO") << std::endl;
     return ok;
+  }
+
+  /// The first number stored under @p key in a summary.json (read on rank 0,
+  /// the same on every rank); -1 if the file or the key is missing.
+  inline double
+  summary_number(const std::string &file, const std::string &key)
+  {
+    double value = -1.;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ifstream     in(file);
+        std::stringstream text;
+        text << in.rdbuf();
+        const std::string s = text.str();
+        std::smatch       m;
+        if (std::regex_search(s, m, std::regex("\"" + key + "\": *\"?([-+0-9.eE]+)")))
+          value = std::stod(m[1]);
+      }
+    return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, value, 0);
   }
 } // namespace archdam::testing

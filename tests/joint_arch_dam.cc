@@ -172,6 +172,15 @@ main(int argc, char **argv)
     sim.run();
     after_static = check_law(*sim.joint_state(), mu);
   }
+  // The static contact problem (104 pairs from zero forces; under gravity
+  // alone about a third of them open and most others slip as the blocks
+  // lean): the active set does not settle from the all-stick start, the
+  // Gauss-Seidel sweeps bring it near, and the active set with Newton steps
+  // for the slipping pairs then converges superlinearly (91 iterations in
+  // all). The damped fixed point for the slip direction that the Newton
+  // step replaced needed 9,425 iterations here.
+  const double static_iterations = testing::summary_number("law_static/summary.json",
+                                                                 "contact iterations");
   const Parameters     p = parameters_from_string(model(law, "law"));
   analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
   sim.run();
@@ -184,6 +193,9 @@ main(int argc, char **argv)
                        after_static.gap, 1e-9);
   testing::check_below("  law after the static stage: tension or shear beyond friction",
                        after_static.force, 1e-6);
+  log << "  static contact problem converged in at most 200 iterations: "
+      << (static_iterations <= 200 ? "yes" : "NO (" + std::to_string(static_iterations) + ")")
+      << std::endl;
   testing::check_below("  law after the dynamic stage: penetration or open loaded pair [m]",
                        after_dynamic.gap, 1e-9);
   testing::check_below("  law after the dynamic stage: tension or shear beyond friction",
@@ -242,21 +254,11 @@ main(int argc, char **argv)
       model(few + "\n  set On non-convergence = continue", "flagged", "dynamic"));
     analysis::Simulation flagged(q, MPI_COMM_WORLD, quiet);
     flagged.run();
-    unsigned int count = 0;
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      {
-        std::ifstream     in("flagged/summary.json");
-        std::stringstream text;
-        text << in.rdbuf();
-        std::smatch m;
-        const std::string s = text.str();
-        if (std::regex_search(s, m, std::regex("\"steps not converged\": *\"?([0-9]+)")))
-          count = std::stoi(m[1]);
-      }
+    const double count = testing::summary_number("flagged/summary.json", "steps not converged");
     log << "non-convergence, continue: reaches the end time: "
         << (std::abs(flagged.state().time - 0.5) < 1e-9 ? "yes" : "NO")
         << ", flagged steps counted in summary.json: "
-        << (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0 || count > 0 ? "yes" : "NO")
+        << (count > 0 ? "yes" : "NO")
         << std::endl;
   }
 }
