@@ -178,4 +178,7 @@ main(int argc, char **argv)
       {"good.prm", "--set", "Mesh/Box/Number of blocks=1", "--set",
        "Contraction joints/Model=frictional contact", "--set",
        "Contraction joints/Monitor points=crest: 5, 10, 20"});
+  run("a monolithic contact solver with a penalty too large to solve",
+      {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
+       "Contraction joints/Solver=monolithic", "--set", "Contraction joints/Penalty factor=1e300"});
 }

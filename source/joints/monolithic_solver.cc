@@ -1,16 +1,13 @@
+#include <archdam/base/input_error.h>
 #include <archdam/base/petsc_check.h>
 #include <archdam/joints/joint_solver.h>
 
 #include <cmath>
+#include <sstream>
 
 namespace archdam::joints
 {
   using namespace dealii;
-
-  namespace
-  {
-
-  } // namespace
 
   MonolithicJointSolver::MonolithicJointSolver(const JointParameters &p, const NodePairs &pairs,
                                                const double h, const SparseMatrix &A,
@@ -124,6 +121,16 @@ namespace archdam::joints
           petsc_check(MatDestroy(&matrix)); // the factorization keeps its own reference
           factor.solve(x, rhs);
         }
+        if (!std::isfinite(x.linfty_norm()))
+          {
+            std::ostringstream message;
+            message << "Contraction joints: the monolithic solver's penalized matrix could "
+                       "not be solved (the solution is not finite): Penalty factor = "
+                    << p.penalty_factor
+                    << " makes it too ill-conditioned for this model; use a smaller one "
+                       "(1e4 ... 1e6).";
+            throw InputError(message.str());
+          }
 
         // Forces from the springs and the friction loads; new states.
         pairs.relative_displacement(x, w);
