@@ -248,8 +248,7 @@ namespace archdam::output
       if (!in.is_open())
         problem = "is missing";
       else if (bytes.size() < sizeof(Header))
-        problem = "is truncated (" + std::to_string(bytes.size()) + " bytes, shorter than its "
-                  "header)";
+        problem = "is truncated (shorter than its header)";
       else
         {
           std::memcpy(&header, bytes.data(), sizeof(Header));
@@ -258,9 +257,7 @@ namespace archdam::output
               header.version != format_version)
             problem = "is not a checkpoint file of this format version";
           else if (payload.size() != header.payload_size)
-            problem = "is truncated or extended (" + std::to_string(payload.size()) +
-                      " bytes of state, its header says " +
-                      std::to_string(header.payload_size) + ")";
+            problem = "is truncated or extended (its size does not match its header)";
           else if (fnv1a(payload) != header.checksum)
             problem = "is damaged (checksum mismatch)";
           else if (header.n_ranks != manifest.n_ranks || header.rank != rank ||
