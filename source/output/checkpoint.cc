@@ -88,8 +88,12 @@ namespace archdam::output
   CheckpointParameters::check() const
   {
     if (!(wall_interval >= 0.))
-      throw InputError("Checkpoints/Wall-time interval (s) = " + std::to_string(wall_interval) +
-                       ": must be 0 (off) or positive.");
+      {
+        std::ostringstream value;
+        value << wall_interval;
+        throw InputError("Checkpoints/Wall-time interval (s) = " + value.str() +
+                         ": must be 0 (off) or positive.");
+      }
   }
 
   std::uint64_t
