@@ -10,6 +10,24 @@ namespace archdam::analysis
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// Which cells and DOFs this rank owns: a checkpoint continues only on
+    /// the same partition (each rank reads back its own part).
+    std::uint64_t
+    partition_signature(const fe::FESpace &space)
+    {
+      std::ostringstream owned;
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          binary::write(owned, cell->active_cell_index());
+      for (auto range = space.locally_owned.begin_intervals();
+           range != space.locally_owned.end_intervals(); ++range)
+        binary::write_all(owned, *range->begin(), range->last());
+      return output::fnv1a(owned.str());
+    }
+  } // namespace
+
   void
   Simulation::save_step_state(std::ostream &out) const
   {
@@ -37,6 +55,7 @@ namespace archdam::analysis
   {
     TimerOutput::Scope t(timer, "dynamic: checkpoints");
     std::ostringstream out;
+    binary::write(out, partition_signature(*fe_space));
     save_step_state(out);
     // The records so far: monitor, pressure and joint histories (their
     // files are written anew from them on resume), envelopes, the energy
@@ -66,6 +85,12 @@ namespace archdam::analysis
     const std::string  payload =
       output::CheckpointFiles(p.output.directory, comm).read_payload(*resume_from);
     std::istringstream in(payload);
+    std::uint64_t      partition = 0;
+    binary::read(in, partition);
+    if (Utilities::MPI::logical_or(partition != partition_signature(*fe_space), comm))
+      throw InputError("--resume: the model is divided among the MPI processes differently "
+                       "from the run that wrote the checkpoint (another partition of the "
+                       "mesh); each process can only continue its own part.");
     load_step_state(in);
     binary::read_all(in, peak_stress.value, peak_stress.where, peak_stress_time);
     history->load(in);
