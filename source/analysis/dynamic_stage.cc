@@ -141,7 +141,8 @@ namespace archdam::analysis
     double                      last_checkpoint = 0.;
     std::string                 step_before; // the last good step, for the divergence stop
 
-    for (unsigned int n = resume_from ? resume_from->step + 1 : 1; n <= n_steps; ++n)
+    const unsigned int first_step = resume_from ? resume_from->step + 1 : 1;
+    for (unsigned int n = first_step; n <= n_steps; ++n)
       {
         {
           TimerOutput::Scope t(timer, "dynamic: last good step kept");
@@ -234,7 +235,7 @@ namespace archdam::analysis
             last_report = elapsed();
             screen << "  step " << n << "/" << n_steps << "  t = " << std::setprecision(4)
                    << current.time << " s  (" << 100 * n / n_steps << " %)  ETA "
-                   << duration_text(last_report / n * (n_steps - n)) << std::endl;
+                   << duration_text(last_report / (n + 1 - first_step) * (n_steps - n)) << std::endl;
           }
       }
     history->finish();
@@ -251,9 +252,10 @@ namespace archdam::analysis
     summary.set("dynamic/beta2", p.time_integration.beta2);
     summary.set("dynamic/rayleigh alpha [s^-1]", rayleigh.first);
     summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
-    summary.set("dynamic/wall time per step [s]", elapsed() / n_steps);
+    const unsigned int n_run = std::max(n_steps + 1 - first_step, 1u); // steps of this run
+    summary.set("dynamic/wall time per step [s]", elapsed() / n_run);
     if (massed_foundation)
       summary.set("dynamic/foundation boundary update per step [s]",
-                  massed_foundation->boundary_update_time() / n_steps);
+                  massed_foundation->boundary_update_time() / n_run);
   }
 } // namespace archdam::analysis
