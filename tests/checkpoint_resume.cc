@@ -240,8 +240,8 @@ main(int argc, char **argv)
 
   // 2. The same with checkpoints, killed at a row drawn with a fixed seed
   //    (after the first checkpoint, before the end).
-  std::mt19937                                rng(2026);
-  const unsigned int                          target = std::uniform_int_distribution<unsigned int>(60, 260)(rng);
+  std::mt19937       rng(2026);
+  const unsigned int target = std::uniform_int_distribution<unsigned int>(60, 260)(rng);
   fs::remove_all("resumed");
   const pid_t  pid    = start(options("resumed", true), "killed.log");
   unsigned int seen   = 0;
@@ -263,7 +263,8 @@ main(int argc, char **argv)
   std::cout << "run with checkpoints killed (SIGKILL) after at least " << target
             << " history rows: " << verdict(!ended && WIFSIGNALED(status)) << std::endl;
   const bool checkpoint_left =
-    fs::exists("resumed/checkpoint/manifest.txt") || fs::exists("resumed/checkpoint.old/manifest.txt");
+    fs::exists("resumed/checkpoint/manifest.txt") ||
+    fs::exists("resumed/checkpoint.old/manifest.txt");
   std::cout << "a complete checkpoint left: " << verdict(checkpoint_left)
             << ", summary.json absent: " << verdict(!fs::exists("resumed/summary.json"))
             << std::endl;
@@ -299,7 +300,8 @@ main(int argc, char **argv)
       else
         differing += " " + name;
     }
-  std::cout << "result files (not HDF5, not summary.json) byte for byte the same (but the date line): "
+  std::cout << "result files (not HDF5, not summary.json) byte for byte the same (but the "
+               "date line): "
             << verdict(n_same == n_files && n_files >= 10) << differing << std::endl;
   for (const std::string name :
        {"histories.csv", "joint_histories_dynamic.csv", "pressure_histories.csv",
@@ -359,7 +361,8 @@ main(int argc, char **argv)
   expect_error("--resume with rank 0's file cut in half",
                spoilt("truncated",
                       [](const fs::path &c) {
-                        fs::resize_file(c / "rank_0000.bin", fs::file_size(c / "rank_0000.bin") / 2);
+                        const auto file = c / "rank_0000.bin";
+                        fs::resize_file(file, fs::file_size(file) / 2);
                       }),
                "rank_0000.bin' is truncated or extended");
   expect_error("--resume with one byte of rank 0's file changed",

@@ -235,7 +235,8 @@ namespace archdam::analysis
             last_report = elapsed();
             screen << "  step " << n << "/" << n_steps << "  t = " << std::setprecision(4)
                    << current.time << " s  (" << 100 * n / n_steps << " %)  ETA "
-                   << duration_text(last_report / (n + 1 - first_step) * (n_steps - n)) << std::endl;
+                   << duration_text(last_report / (n + 1 - first_step) * (n_steps - n))
+                   << std::endl;
           }
       }
     history->finish();
