@@ -21,6 +21,7 @@ TESTS = [
     ("ground_motion_errors", "Ground-motion files and parameters"),
     ("reservoir_errors", "Reservoir"),
     ("foundation_errors", "Foundation"),
+    ("checkpoint_resume", "Resuming from a checkpoint (`--resume`)"),
 ]
 
 INTRO = """# Bad input and what ArchDam says about it

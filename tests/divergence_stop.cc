@@ -255,6 +255,36 @@ end
     const auto   fields  = archdam::testing::pvd_problem("results", "solution.pvd", n_files);
     log() << "  solution.pvd and every file it names parse: " << yes(fields.empty()) << fields
           << std::endl;
+
+    // The checkpoint of the last good step (output/checkpoint.h): its
+    // manifest names the step before the stop, and a run resumed from it
+    // stops again in the same step with the same message (a checkpoint that
+    // held the failed step would stop one step later, or at once). The
+    // resume is tried serially only: a second model built in the same
+    // process may be divided among the ranks differently, which --resume
+    // rejects; checkpoint_resume_mpi resumes in a new job, as a user does.
+    if (stops)
+      {
+        std::ifstream     manifest("results/checkpoint/manifest.txt");
+        const std::string text((std::istreambuf_iterator<char>(manifest)),
+                               std::istreambuf_iterator<char>());
+        log() << "  a checkpoint of the last good step (the one before the stop): "
+              << yes(stop_step > 0 &&
+                     text.find("\nstep = " + std::to_string(stop_step - 1) + "\n") !=
+                       std::string::npos)
+              << std::endl;
+        if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+          return;
+        const char        *resume_argv[] = {"archdam", "case.prm", "--resume"};
+        std::ostringstream resumed_out, resumed_err;
+        const int code = archdam::run_command_line(3, resume_argv, resumed_out, resumed_err);
+        MPI_Barrier(MPI_COMM_WORLD);
+        log() << "  resumed from it, the run stops again in the same step with the same "
+                 "message: "
+              << yes(code == 1 && resumed_err.str() == err.str()) << std::endl;
+        if (resumed_err.str() != err.str())
+          log() << "    first run: " << err.str() << "    resumed:   " << resumed_err.str();
+      }
   }
 } // namespace
 

@@ -123,6 +123,8 @@ main(int argc, char **argv)
        "Damping/First frequency=20", "--set", "Damping/Second frequency=10"});
   run_set("no stage to run", "Analysis/Stages=");
   run_set("an output directory inside a file", "Output/Directory=good.prm/results");
+  run_set("a negative checkpoint interval", "Checkpoints/Interval (steps)=-5");
+  run_set("a negative checkpoint wall-time interval", "Checkpoints/Wall-time interval (s)=-60");
 
   // Mesh
   run_set("box cells across the dam not a multiple of the blocks", "Mesh/Box/Cells in y=3");

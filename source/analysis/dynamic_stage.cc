@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 
 namespace archdam::analysis
 {
@@ -109,18 +110,24 @@ namespace archdam::analysis
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
 
-    current.time = 0.;
-    current.step = 0;
-    current.v    = 0.;
-    current.a    = 0.;
-    history->append(monitor->evaluate(current));
-    if (pressure)
-      pressure->record(current);
+    if (!resume_from)
+      {
+        current.time = 0.;
+        current.step = 0;
+        current.v    = 0.;
+        current.a    = 0.;
+        history->append(monitor->evaluate(current));
+        if (pressure)
+          pressure->record(current);
+      }
     stress_envelope = std::make_unique<output::StressEnvelope>(*fe_space, p.materials);
-    stress_envelope->update(current.u, current.time);
+    if (!resume_from)
+      stress_envelope->update(current.u, current.time);
     if (massed_foundation)
       massed_foundation->start(current.u);
     start_energy_balance();
+    if (resume_from) // after every recorder exists: it continues their records
+      read_checkpoint();
 
     Vector     load;
     fe_space->reinit(load);
@@ -131,9 +138,18 @@ namespace archdam::analysis
     double       last_report = 0.;
     const double report_every = 10.; // seconds of wall time between progress lines
     const time::DivergenceCheck divergence(*fe_space);
+    double                      last_checkpoint = 0.;
+    std::string                 step_before; // the last good step, for the divergence stop
 
-    for (unsigned int n = 1; n <= n_steps; ++n)
+    const unsigned int first_step = resume_from ? resume_from->step + 1 : 1;
+    for (unsigned int n = first_step; n <= n_steps; ++n)
       {
+        {
+          TimerOutput::Scope t(timer, "dynamic: last good step kept");
+          std::ostringstream out;
+          save_step_state(out);
+          step_before = out.str();
+        }
         {
           TimerOutput::Scope t(timer, "dynamic: steps");
           external_load(n * dt, load);
@@ -155,6 +171,10 @@ namespace archdam::analysis
           }
         catch (const RunStopped &stop)
           {
+            // A checkpoint of the last good step, without the one that failed.
+            std::istringstream before(step_before);
+            load_step_state(before);
+            write_checkpoint();
             // The results up to the last good step stay: the histories end
             // with it, the summary says why and when the run stopped.
             history->finish();
@@ -196,12 +216,27 @@ namespace archdam::analysis
               joint_output->write_fields(current.time, *joint_solver);
           }
 
+        // Checkpoints by steps or wall time (rank 0's clock decides for all).
+        const auto &every = p.checkpoints;
+        bool        due   = n < n_steps && every.interval > 0 && n % every.interval == 0;
+        if (n < n_steps && every.wall_interval > 0)
+          due = Utilities::MPI::broadcast(
+            comm, due || elapsed() - last_checkpoint >= every.wall_interval, 0);
+        if (due)
+          {
+            write_checkpoint();
+            last_checkpoint = elapsed();
+            screen << "  checkpoint after step " << n << " (t = " << current.time << " s)"
+                   << std::endl;
+          }
+
         if (p.output.progress && (elapsed() - last_report > report_every || n == n_steps))
           {
             last_report = elapsed();
             screen << "  step " << n << "/" << n_steps << "  t = " << std::setprecision(4)
                    << current.time << " s  (" << 100 * n / n_steps << " %)  ETA "
-                   << duration_text(last_report / n * (n_steps - n)) << std::endl;
+                   << duration_text(last_report / (n + 1 - first_step) * (n_steps - n))
+                   << std::endl;
           }
       }
     history->finish();
@@ -218,9 +253,10 @@ namespace archdam::analysis
     summary.set("dynamic/beta2", p.time_integration.beta2);
     summary.set("dynamic/rayleigh alpha [s^-1]", rayleigh.first);
     summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
-    summary.set("dynamic/wall time per step [s]", elapsed() / n_steps);
+    const unsigned int n_run = std::max(n_steps + 1 - first_step, 1u); // steps of this run
+    summary.set("dynamic/wall time per step [s]", elapsed() / n_run);
     if (massed_foundation)
       summary.set("dynamic/foundation boundary update per step [s]",
-                  massed_foundation->boundary_update_time() / n_steps);
+                  massed_foundation->boundary_update_time() / n_run);
   }
 } // namespace archdam::analysis

@@ -1,3 +1,4 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/analysis/energy_balance.h>
 
 #include <cmath>
@@ -343,5 +344,25 @@ namespace archdam::analysis
     else
       out << " J; balance error " << std::setprecision(2) << error;
     return out.str();
+  }
+
+  void
+  EnergyBalance::save(std::ostream &out) const
+  {
+    for (const Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
+                            &boundary_prev, &boundary_static, &free_field_prev,
+                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev})
+      binary::write(out, *v);
+    binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
+  }
+
+  void
+  EnergyBalance::load(std::istream &in)
+  {
+    for (Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
+                      &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
+                      &radiation_prev, &dashpot_prev, &ub_prev})
+      binary::read(in, *v);
+    binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }
 } // namespace archdam::analysis

@@ -61,6 +61,8 @@ namespace archdam::analysis
     joint_solver = std::move(solver);
     joint_output = std::make_unique<joints::JointOutput>(p.joints, *node_pairs,
                                                          p.output.directory, "dynamic");
+    if (resume_from) // the records so far come with the checkpoint
+      return;
     joint_output->record(0., *joint_solver);
     if (p.output.field_interval > 0)
       joint_output->write_fields(0., *joint_solver);

@@ -29,16 +29,25 @@ namespace archdam::analysis
   {}
 
   void
-  Simulation::run()
+  Simulation::run(const bool resume)
   {
     screen << "ArchDam: case '" << p.analysis.case_name << "'" << std::endl;
     create_output_directory();
+    if (resume)
+      {
+        if (!p.analysis.runs("dynamic"))
+          throw InputError("--resume continues a dynamic stage, and Analysis/Stages has none.");
+        resume_from = std::make_unique<output::CheckpointManifest>(
+          output::CheckpointFiles(p.output.directory, comm).read_manifest(p.fingerprint));
+        screen << "Resuming the dynamic stage after step " << resume_from->step << " (t = "
+               << resume_from->time << " s)" << std::endl;
+      }
 
     if (!fe_space)
       setup_model();
-    if (p.analysis.runs("static"))
+    if (p.analysis.runs("static") && !resume_from)
       run_static_stage();
-    if (p.analysis.runs("modal"))
+    if (p.analysis.runs("modal") && !resume_from)
       run_modal_stage();
     if (p.analysis.runs("dynamic"))
       run_dynamic_stage();

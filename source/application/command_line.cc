@@ -19,7 +19,7 @@ namespace archdam
   {
     const char *usage =
       "Usage:\n"
-      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only]\n"
+      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only | --resume]\n"
       "  archdam --print-parameters [text|json|xml|latex]\n"
       "  archdam --help\n";
 
@@ -44,7 +44,7 @@ namespace archdam
 
       std::string              case_file;
       std::vector<std::string> overrides;
-      bool                     mesh_only = false;
+      bool                     mesh_only = false, resume = false;
       for (unsigned int i = 0; i < args.size(); ++i)
         if (args[i] == "--set")
           {
@@ -56,6 +56,8 @@ namespace archdam
           overrides.push_back(args[i].substr(6));
         else if (args[i] == "--mesh-only")
           mesh_only = true;
+        else if (args[i] == "--resume")
+          resume = true;
         else if (args[i].rfind("-", 0) == 0)
           throw InputError("Unknown option '" + args[i] + "'.\n" + usage);
         else if (case_file.empty())
@@ -65,13 +67,15 @@ namespace archdam
                            "'.");
       if (case_file.empty())
         throw InputError(std::string("No case file given.\n") + usage);
+      if (mesh_only && resume)
+        throw InputError("--mesh-only and --resume exclude each other.");
 
       const Parameters      p = read_parameters(case_file, overrides);
       analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
       if (mesh_only)
         simulation.run_mesh_only();
       else
-        simulation.run();
+        simulation.run(resume);
       return 0;
     }
   } // namespace

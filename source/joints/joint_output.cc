@@ -1,3 +1,4 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/joints/joint_output.h>
@@ -72,6 +73,18 @@ namespace archdam::joints
         row.push_back(std::max(0., joints.gap(i)));
         row.push_back(joints.slip(i));
       }
+    append(row);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (joints.gap(i) > peak_opening[i])
+        {
+          peak_opening[i] = joints.gap(i);
+          peak_time[i]    = time;
+        }
+  }
+
+  void
+  JointOutput::append(const std::vector<double> &row)
+  {
     table.push_back(row);
     on_rank_zero(pairs.communicator(), [&] {
       std::ostringstream line;
@@ -81,12 +94,26 @@ namespace archdam::joints
       line << '\n';
       output::append_line(csv, line.str());
     });
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (joints.gap(i) > peak_opening[i])
-        {
-          peak_opening[i] = joints.gap(i);
-          peak_time[i]    = time;
-        }
+  }
+
+  void
+  JointOutput::save(std::ostream &out) const
+  {
+    binary::write_all(out, table, peak_opening, peak_time, pvd_records);
+  }
+
+  void
+  JointOutput::load(std::istream &in)
+  {
+    std::vector<std::vector<double>> rows;
+    binary::read_all(in, rows, peak_opening, peak_time, pvd_records);
+    if (peak_opening.size() != pairs.size())
+      throw InputError("Checkpoint: the saved joint state has " +
+                       std::to_string(peak_opening.size()) + " node pairs, the model " +
+                       std::to_string(pairs.size()) + ".");
+    AssertThrow(table.empty(), ExcMessage("load() starts a new history"));
+    for (const auto &row : rows)
+      append(row);
   }
 
   void

@@ -1,3 +1,5 @@
+#include <archdam/base/binary_io.h>
+#include <archdam/base/input_error.h>
 #include <archdam/joints/joint_solver.h>
 
 #include <cmath>
@@ -211,5 +213,20 @@ namespace archdam::joints
     if (p.solver == "monolithic")
       return std::make_unique<MonolithicJointSolver>(p, pairs, h, A, A_factor);
     return std::make_unique<MixedJointSolver>(p, pairs, h, A_factor);
+  }
+
+  void
+  JointSolver::save(std::ostream &out) const
+  {
+    binary::write_all(out, force, force_committed, w, w_committed, state, damaged);
+  }
+
+  void
+  JointSolver::load(std::istream &in)
+  {
+    binary::read_all(in, force, force_committed, w, w_committed, state, damaged);
+    if (state.size() != pairs.size() || force.size() != dim * pairs.size())
+      throw InputError("Checkpoint: the saved joint state has " + std::to_string(state.size()) +
+                       " node pairs, the model " + std::to_string(pairs.size()) + ".");
   }
 } // namespace archdam::joints

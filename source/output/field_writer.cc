@@ -1,7 +1,12 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/output/atomic_file.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/physics/solid/stress.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <deal.II/numerics/data_out.h>
 
@@ -144,5 +149,26 @@ namespace archdam::output
                                  space.comm);
         on_rank_zero(space.comm, [&] { commit_temporary(p.directory + "/solution.xdmf"); });
       }
+  }
+
+  void
+  FieldWriter::save(std::ostream &out) const
+  {
+    std::ostringstream xdmf;
+    {
+      boost::archive::binary_oarchive archive(xdmf);
+      archive << xdmf_entries;
+    }
+    binary::write_all(out, pvd_records, xdmf.str(), n_written);
+  }
+
+  void
+  FieldWriter::load(std::istream &in)
+  {
+    std::string xdmf;
+    binary::read_all(in, pvd_records, xdmf, n_written);
+    std::istringstream              text(xdmf);
+    boost::archive::binary_iarchive archive(text);
+    archive >> xdmf_entries;
   }
 } // namespace archdam::output

@@ -1,3 +1,4 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/output/atomic_file.h>
@@ -45,6 +46,26 @@ namespace archdam::output
       line << '\n';
       append_line(csv, line.str());
     });
+  }
+
+  void
+  HistoryWriter::save(std::ostream &out) const
+  {
+    binary::write(out, table);
+  }
+
+  void
+  HistoryWriter::load(std::istream &in)
+  {
+    std::vector<std::vector<double>> rows;
+    binary::read(in, rows);
+    if (!rows.empty() && rows.front().size() != names.size())
+      throw InputError("Checkpoint: the saved histories have " +
+                       std::to_string(rows.front().size()) + " columns, the monitors " +
+                       std::to_string(names.size()) + ".");
+    AssertThrow(table.empty(), ExcMessage("load() starts a new history"));
+    for (const auto &row : rows)
+      append(row);
   }
 
   void

@@ -1,6 +1,7 @@
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/output/atomic_file.h>
+#include <archdam/base/binary_io.h>
 #include <archdam/output/pressure_recorder.h>
 
 #include <deal.II/base/mpi.h>
@@ -75,6 +76,12 @@ namespace archdam::output
     std::vector<double> row{state.time};
     const auto          p = evaluate(state.u);
     row.insert(row.end(), p.begin(), p.end());
+    append(row);
+  }
+
+  void
+  PressureRecorder::append(const std::vector<double> &row)
+  {
     rows.push_back(row);
     on_rank_zero(space.comm, [&] {
       std::ofstream csv(directory + "/pressure_histories.csv",
@@ -93,6 +100,22 @@ namespace archdam::output
       line << "\n";
       append_line(csv, line.str());
     });
+  }
+
+  void
+  PressureRecorder::save(std::ostream &out) const
+  {
+    binary::write(out, rows);
+  }
+
+  void
+  PressureRecorder::load(std::istream &in)
+  {
+    std::vector<std::vector<double>> saved;
+    binary::read(in, saved);
+    rows.clear();
+    for (const auto &row : saved)
+      append(row);
   }
 
   void

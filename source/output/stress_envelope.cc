@@ -1,3 +1,4 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/output/atomic_file.h>
@@ -214,5 +215,22 @@ namespace archdam::output
         place("min minor principal stress [Pa]", smallest->min_s3, smallest->time_min_s3,
               smallest->where);
       }
+  }
+
+  void
+  StressEnvelope::save(std::ostream &out) const
+  {
+    binary::write_all(out, entries, started);
+  }
+
+  void
+  StressEnvelope::load(std::istream &in)
+  {
+    const auto n = entries.size();
+    binary::read_all(in, entries, started);
+    if (entries.size() != n)
+      throw InputError("Checkpoint: the saved stress envelope has " +
+                       std::to_string(entries.size()) + " points on this process, the model " +
+                       std::to_string(n) + ".");
   }
 } // namespace archdam::output

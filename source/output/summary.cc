@@ -1,3 +1,4 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/output/atomic_file.h>
 #include <archdam/output/summary.h>
 
@@ -112,5 +113,17 @@ namespace archdam::output
     out << "\n";
 
     write_atomically(filename, [&](std::ostream &f) { f << out.str(); });
+  }
+
+  void
+  Summary::save(std::ostream &out) const
+  {
+    binary::write(out, entries);
+  }
+
+  void
+  Summary::load(std::istream &in)
+  {
+    binary::read(in, entries);
   }
 } // namespace archdam::output

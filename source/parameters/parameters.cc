@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace archdam
@@ -36,6 +37,7 @@ namespace archdam
     section("Modal analysis", [&] { modal.add_parameters(prm); });
     section("Monitors", [&] { monitors.add_parameters(prm); });
     section("Output", [&] { output.add_parameters(prm); });
+    section("Checkpoints", [&] { checkpoints.add_parameters(prm); });
   }
 
   namespace
@@ -108,6 +110,33 @@ namespace archdam
       output::parse_monitor_points(p.monitors.points);
       if (p.analysis.stages.empty())
         throw InputError("Analysis/Stages: nothing to run.");
+      p.checkpoints.check();
+    }
+
+    /// Every value outside Output and Checkpoints, "path = value" a line,
+    /// hashed (Parameters::fingerprint).
+    std::string
+    fingerprint_of(const ParameterHandler &prm)
+    {
+      std::stringstream json;
+      prm.print_parameters(json, ParameterHandler::JSON);
+      boost::property_tree::ptree tree;
+      boost::property_tree::read_json(json, tree);
+      tree.erase("Output");
+      tree.erase("Checkpoints");
+      std::string values;
+      const std::function<void(const boost::property_tree::ptree &, const std::string &)> walk =
+        [&](const boost::property_tree::ptree &node, const std::string &path) {
+          for (const auto &[key, child] : node)
+            if (const auto value = child.get_optional<std::string>("value"))
+              values += path + key + " = " + *value + "\n";
+            else if (!child.empty())
+              walk(child, path + key + "/");
+        };
+      walk(tree, "");
+      std::ostringstream hex;
+      hex << std::hex << output::fnv1a(values);
+      return hex.str();
     }
 
     /// A case file may start from another one: `include other.prm` reads that
@@ -162,6 +191,7 @@ namespace archdam
       apply_override(prm, o);
 
     p.base_directory = directory;
+    p.fingerprint    = fingerprint_of(prm);
     if (p.analysis.case_name.empty())
       {
         const std::string base = filename.substr(slash == std::string::npos ? 0 : slash + 1);
@@ -179,6 +209,7 @@ namespace archdam
     p.add_parameters(prm);
     prm.parse_input_from_string(text, "", false);
     p.base_directory = ".";
+    p.fingerprint    = fingerprint_of(prm);
     check(p);
     return p;
   }

@@ -10,6 +10,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,13 @@ namespace archdam::analysis
     /// One line for the run log.
     std::string
     line() const;
+
+    /// The path integrals and the last step's state, for a checkpoint
+    /// (output/checkpoint.h); load() after start().
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
 
   private:
     /// x with its constrained entries zero (the condensed matrices act on it

@@ -7,6 +7,7 @@
 #include <archdam/joints/joint_output.h>
 #include <archdam/joints/joint_solver.h>
 #include <archdam/loads/ground_motion.h>
+#include <archdam/output/checkpoint.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/histories.h>
 #include <archdam/output/monitors.h>
@@ -38,9 +39,12 @@ namespace archdam::analysis
   public:
     Simulation(const Parameters &p, MPI_Comm comm, std::ostream &screen);
 
-    /// Build the model and run every stage the parameters ask for.
+    /// Build the model and run every stage the parameters ask for; with
+    /// @p resume, continue the dynamic stage from the newest checkpoint in
+    /// Output/Directory instead (the static and modal stages are not
+    /// repeated: their results are in the checkpoint).
     void
-    run();
+    run(bool resume = false);
 
     /// Build the model only: mesh, DOFs, M, K and loads (run() does it first).
     void
@@ -173,6 +177,24 @@ namespace archdam::analysis
     /// (or flag the step) if it did not converge.
     void
     check_contact_step(const joints::ContactStep &step, double t);
+    // Checkpoints of the dynamic stage (dynamic_checkpoint.cc).
+    /// The state a step changes before the divergence check: u, v, a, the
+    /// joints' committed state, the boundary's histories, contact counts.
+    void
+    save_step_state(std::ostream &out) const;
+    void
+    load_step_state(std::istream &in);
+    /// Everything the rest of the run needs (step state, histories,
+    /// envelopes, energy sums, summary, field records) to
+    /// Output/Directory/checkpoint (output/checkpoint.h).
+    void
+    write_checkpoint();
+    /// Continue from the checkpoint resume_from names.
+    void
+    read_checkpoint();
+    /// Set by run(true): the checkpoint the dynamic stage continues from.
+    std::unique_ptr<output::CheckpointManifest> resume_from;
+
     /// The energy balance from the current state (dynamic_stage.cc).
     void
     start_energy_balance();

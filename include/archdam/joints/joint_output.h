@@ -49,7 +49,20 @@ namespace archdam::joints
       return table;
     }
 
+    /// The rows, peaks and field records so far, for a checkpoint
+    /// (output/checkpoint.h).
+    void
+    save(std::ostream &out) const;
+    /// Continue after a checkpoint (the joint histories file is written
+    /// anew with its rows).
+    void
+    load(std::istream &in);
+
   private:
+    /// Keep @p row and append it to the joint histories file.
+    void
+    append(const std::vector<double> &row);
+
     const NodePairs                 &pairs;
     const std::string                directory, stage;
     const bool                       writer;

@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +52,14 @@ namespace archdam::joints
     /// Start from a committed state (e.g. the static stage's), keeping the damage.
     void
     set_state(const JointSolver &other);
+
+    /// The committed state of every pair (forces, relative displacements,
+    /// states, damage), for a checkpoint (output/checkpoint.h); solve()
+    /// starts from it alone.
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
 
     /// A message for a step that did not converge: joint, place, residual.
     std::string

@@ -7,6 +7,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <iosfwd>
 #include <string>
 #include <utility>
 #include <vector>
@@ -55,6 +56,13 @@ namespace archdam::output
     /// Write the fields of @p s (its time labels the output).
     void
     write(const time::NewmarkState &s);
+
+    /// The records of the fields written so far (PVD, XDMF), for a
+    /// checkpoint (output/checkpoint.h).
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
 
   private:
     const OutputParameters                   &p;

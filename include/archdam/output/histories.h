@@ -41,6 +41,15 @@ namespace archdam::output
       return table;
     }
 
+    /// The rows so far, for a checkpoint (output/checkpoint.h).
+    void
+    save(std::ostream &out) const;
+    /// Continue after the rows of a checkpoint: histories.csv is written
+    /// anew with them (a killed run may have appended rows after the
+    /// checkpoint), then append() goes on.
+    void
+    load(std::istream &in);
+
   private:
     MPI_Comm                         comm;
     std::string                      directory;

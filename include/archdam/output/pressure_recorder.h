@@ -4,6 +4,7 @@
 #include <archdam/output/monitors.h>
 #include <archdam/time/newmark.h>
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,20 @@ namespace archdam::output
       return rows;
     }
 
+    /// The rows so far, for a checkpoint (output/checkpoint.h).
+    void
+    save(std::ostream &out) const;
+    /// Continue after the rows of a checkpoint (pressure_histories.csv is
+    /// written anew with them).
+    void
+    load(std::istream &in);
+
   private:
+    /// Keep @p row and append it to pressure_histories.csv (the first one
+    /// with the header, to a new file).
+    void
+    append(const std::vector<double> &row);
+
     struct Weights
     {
       std::vector<dealii::types::global_dof_index> dofs;

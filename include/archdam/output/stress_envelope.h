@@ -8,6 +8,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -86,6 +87,12 @@ namespace archdam::output
      */
     void
     write(const std::string &directory, Summary &summary) const;
+
+    /// The extremes so far on this rank, for a checkpoint (output/checkpoint.h).
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
 
   private:
     struct Face

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <utility>
@@ -22,6 +23,13 @@ namespace archdam::output
     /// Write as JSON; keys with '/' become nested objects.
     void
     write(const std::string &filename) const;
+
+    /// The entries so far, for a checkpoint (output/checkpoint.h); load()
+    /// replaces them.
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
 
   private:
     // path -> JSON-encoded value, in insertion order

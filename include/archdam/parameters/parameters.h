@@ -7,6 +7,7 @@
 #include <archdam/joints/joint_parameters.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/loads/static_loads.h>
+#include <archdam/output/checkpoint.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/monitors.h>
 #include <archdam/physics/foundation/foundation.h>
@@ -44,6 +45,11 @@ namespace archdam
     analysis::ModalParameters                modal;
     output::MonitorParameters                monitors;
     output::OutputParameters                 output;
+    output::CheckpointParameters             checkpoints;
+
+    /// A hash of every parameter value outside the sections Output and
+    /// Checkpoints: a checkpoint continues only the case that wrote it.
+    std::string fingerprint;
 
     /// Directory of the parameter file: relative file names in it are
     /// resolved against it.

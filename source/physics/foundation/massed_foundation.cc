@@ -83,4 +83,18 @@ namespace archdam::physics::foundation
         newmark.advance(load, s, solve);
       }
   }
+
+  void
+  MassedFoundation::save_state(std::ostream &out) const
+  {
+    if (mtf)
+      mtf->save(out);
+  }
+
+  void
+  MassedFoundation::load_state(std::istream &in)
+  {
+    if (mtf)
+      mtf->load(in);
+  }
 } // namespace archdam::physics::foundation

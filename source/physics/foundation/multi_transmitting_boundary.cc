@@ -1,3 +1,4 @@
+#include <archdam/base/binary_io.h>
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/physics/foundation/multi_transmitting_boundary.h>
@@ -205,5 +206,23 @@ namespace archdam::physics::foundation
     for (unsigned int q = 0; q < z_point.size(); ++q)
       history[0][q] = interpolate(q, ghosted) - u0_point[q] -
                       free_field.displacement(z_point[q], t)[components[q / order]];
+  }
+
+  void
+  MultiTransmittingBoundary::save(std::ostream &out) const
+  {
+    binary::write_all(out, u0_boundary, u0_point, history);
+  }
+
+  void
+  MultiTransmittingBoundary::load(std::istream &in)
+  {
+    const auto n_boundary = u0_boundary.size(), n_points = u0_point.size(),
+               n_history = history.size();
+    binary::read_all(in, u0_boundary, u0_point, history);
+    if (u0_boundary.size() != n_boundary || u0_point.size() != n_points ||
+        history.size() != n_history)
+      throw InputError("Checkpoint: the saved transmitting boundary does not match the "
+                       "model's.");
   }
 } // namespace archdam::physics::foundation

@@ -84,6 +84,13 @@ namespace archdam::physics::foundation
       return viscous.get();
     }
 
+    /// The boundary's state (MTF histories; the viscous boundary has none),
+    /// for a checkpoint (output/checkpoint.h); load_state() after start().
+    void
+    save_state(std::ostream &out) const;
+    void
+    load_state(std::istream &in);
+
   private:
     std::unique_ptr<MultiTransmittingBoundary> mtf;
     std::unique_ptr<ViscousSpringBoundary>     viscous;

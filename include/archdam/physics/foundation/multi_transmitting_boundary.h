@@ -6,6 +6,7 @@
 #include <archdam/physics/foundation/outer_boundary.h>
 #include <archdam/physics/solid/materials.h>
 
+#include <iosfwd>
 #include <vector>
 
 namespace archdam::physics::foundation
@@ -64,6 +65,13 @@ namespace archdam::physics::foundation
     {
       return max_courant;
     }
+
+    /// The initial values and the scattered-motion histories, for a
+    /// checkpoint (output/checkpoint.h).
+    void
+    save(std::ostream &out) const;
+    void
+    load(std::istream &in);
 
   private:
     double
