@@ -100,7 +100,9 @@ end
       {
         const std::string log = directory + ".log";
         std::freopen(log.c_str(), "w", stdout);
-        std::freopen(log.c_str(), "a", stderr);
+        // one open file for both: with two, a later write to stdout would
+        // overwrite what stderr appended (the error message)
+        dup2(fileno(stdout), fileno(stderr));
         const std::string set = "Output/Directory=" + directory;
         execl(ARCHDAM_EXECUTABLE, "archdam", "case.prm", "--set", set.c_str(), nullptr);
         std::_Exit(127);
