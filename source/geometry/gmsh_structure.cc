@@ -1,6 +1,7 @@
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/gmsh_structure.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <charconv>
@@ -8,7 +9,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <set>
 #include <unordered_set>
+#include <vector>
 
 namespace archdam::geometry
 {
@@ -37,6 +40,13 @@ namespace archdam::geometry
         while (pos < text.size() && !std::isspace(static_cast<unsigned char>(text[pos])))
           ++pos;
         return text.substr(start, pos - start);
+      }
+
+      /// The line of the last word read.
+      unsigned int
+      line_number() const
+      {
+        return line;
       }
 
       [[noreturn]] void
@@ -143,7 +153,7 @@ namespace archdam::geometry
     }
 
     /// One element's nodes: defined in $Nodes, none twice.
-    void
+    std::array<long long, 8>
     read_element_nodes(Words &words, const unsigned int n, const std::unordered_set<long long> &nodes)
     {
       std::array<long long, 8> element{};
@@ -157,7 +167,83 @@ namespace archdam::geometry
             if (element[j] == element[i])
               words.fail("an element lists node " + std::to_string(element[i]) + " twice");
         }
+      return element;
     }
+
+    /**
+     * The faces of the hexahedra and quadrangles read so far, by their node
+     * set: two elements on the same nodes must have the same face (the same
+     * four edges), and a face belongs to two hexahedra at most, which share
+     * no other face. deal.II assumes all this (in a release build a tangled
+     * cell, twisted so that its face runs through other edges than its
+     * neighbour's, goes unnoticed into the mesh's connectivity).
+     */
+    class Faces
+    {
+    public:
+      void
+      add(Words &words, const std::array<long long, 8> &element, const unsigned int n)
+      {
+        // Gmsh's node order: bottom 0-1-2-3, top 4-5-6-7, sides; a
+        // quadrangle is its own face 0-1-2-3.
+        static const unsigned int cycles[6][4] = {
+          {0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+        const bool         hex  = n == 8;
+        const unsigned int line = words.line_number();
+        for (unsigned int f = 0; f < (hex ? 6 : 1); ++f)
+          {
+            std::array<long long, 4>                         key;
+            std::array<std::pair<long long, long long>, 4> edges;
+            for (unsigned int i = 0; i < 4; ++i)
+              {
+                const long long a = element[cycles[f][i]], b = element[cycles[f][(i + 1) % 4]];
+                key[i]   = a;
+                edges[i] = {std::min(a, b), std::max(a, b)};
+              }
+            std::sort(key.begin(), key.end());
+            std::sort(edges.begin(), edges.end());
+            auto &face = faces[key];
+            if (face.line == 0)
+              face = {edges, line};
+            else if (face.edges != edges)
+              words.fail("this element and the one at line " + std::to_string(face.line) +
+                         " have a face on the same nodes " + nodes_text(key) +
+                         " with different edges: one of them has its nodes in a tangled order "
+                         "(it is twisted and overlaps its neighbours); check the node order of "
+                         "the hexahedra there");
+            if (!hex)
+              continue;
+            if (face.hexahedra.size() == 2)
+              words.fail("a third hexahedron on the face of nodes " + nodes_text(key) +
+                         " of the hexahedra at lines " + std::to_string(face.hexahedra[0]) +
+                         " and " + std::to_string(face.hexahedra[1]) +
+                         ": the hexahedra overlap");
+            if (face.hexahedra.size() == 1 && !neighbours.emplace(face.hexahedra[0], line).second)
+              words.fail("this hexahedron shares two faces with the one at line " +
+                         std::to_string(face.hexahedra[0]) +
+                         ": the hexahedra overlap (an element given twice?)");
+            face.hexahedra.push_back(line);
+          }
+      }
+
+    private:
+      static std::string
+      nodes_text(const std::array<long long, 4> &key)
+      {
+        return std::to_string(key[0]) + " " + std::to_string(key[1]) + " " +
+               std::to_string(key[2]) + " " + std::to_string(key[3]);
+      }
+
+      struct Face
+      {
+        std::array<std::pair<long long, long long>, 4> edges;
+        unsigned int                                   line = 0;
+        /// The lines of the hexahedra on the face.
+        std::vector<unsigned int> hexahedra;
+      };
+      std::map<std::array<long long, 4>, Face>      faces;
+      std::set<std::pair<unsigned int, unsigned int>> neighbours;
+    };
   } // namespace
 
   void
@@ -262,13 +348,16 @@ namespace archdam::geometry
 
     // Element type and nodes; a non-hexahedral one ends the check with the
     // message read_gmsh() gives for it.
-    bool other_cells = false;
+    bool       other_cells = false;
+    Faces      faces;
     const auto read_element = [&](const long long type) {
       const unsigned int n = nodes_of(words, type);
       other_cells          = other_cells || n == 0;
-      if (n > 0)
-        read_element_nodes(words, n, nodes);
-      return n > 0;
+      if (n == 0)
+        return;
+      const auto element = read_element_nodes(words, n, nodes);
+      if (n >= 4)
+        faces.add(words, element, n);
     };
     if (v41)
       {
