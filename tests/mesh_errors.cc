@@ -22,7 +22,8 @@
 //    above 254, an element type ArchDam does not read, a number that is not
 //    an integer, a misspelt section, and in format 4.1 an entity with two
 //    physical groups, parametric nodes, block sums that differ from the
-//    header, an entity dimension out of range, $Entities in a format-2 file.
+//    header, an entity dimension out of range, $Entities in a format-2 file;
+//    hexahedra that overlap (one given twice, a third on a face).
 
 #include <archdam/application/command_line.h>
 
@@ -276,6 +277,20 @@ main(int argc, char **argv)
             "element_sum.msh", edited(ex::v4, "\n47 958 1 958\n", "\n47 959 1 958\n"));
   malformed("format 4.1 $Entities in a file whose header says 2.2 (line 4)", "entities_v2.msh",
             edited(ex::v4, "4.1 0 8", "2.2 0 8"));
+  {
+    // a third hexahedron on the two connected blocks (nodes 1-8 block 0,
+    // 9-12 block 1's far side; the joint face is 2 4 6 8): block 0 again,
+    // then block 1 again listed from the joint face (its bottom) up
+    std::string blocks = two_blocks(true);
+    blocks.replace(blocks.find("$Elements\n2\n"), 12, "$Elements\n3\n");
+    const auto with = [&](const std::string &third) {
+      std::string text = blocks;
+      return text.replace(text.find("$EndElements"), 0, third + "\n");
+    };
+    malformed("block 0 given twice (line 23)", "twice.msh", with("3 5 2 10 1 1 2 4 3 5 6 8 7"));
+    malformed("a third hexahedron on the joint face (line 23)", "third.msh",
+              with("3 5 2 11 1 2 4 8 6 9 10 12 11"));
+  }
   {
     // node 1, the model's corner (-30, -15, -20), belongs to one rock cell
     // only: moved onto node 53, a corner of the same cell, it collapses an
