@@ -267,8 +267,8 @@ namespace archdam::geometry
     if (section == "$PhysicalNames")
       skip("$EndPhysicalNames");
 
-    // Physical id of each entity, by dimension (format 4.1).
-    std::array<std::map<long long, long long>, 4> physical;
+    // Format 4.1: the entities and their physical groups, GridIn's material
+    // and boundary ids.
     if (section == "$Entities")
       {
         if (!v41)
@@ -279,19 +279,16 @@ namespace archdam::geometry
         for (unsigned int d = 0; d < 4; ++d)
           for (long long e = 0; e < n[d]; ++e)
             {
-              const long long tag = words.integer("an entity tag", INT_MIN, INT_MAX);
+              words.integer("an entity tag", INT_MIN, INT_MAX);
               for (unsigned int c = 0; c < (d == 0 ? 3 : 6); ++c)
                 words.real("a coordinate of an entity's bounding box");
-              const long long n_physical =
-                words.integer("the number of physical groups of an entity (ArchDam reads "
-                              "one at most)",
-                              0, 1);
-              physical[d][tag] =
-                n_physical == 0 ? 0 :
-                d == 0          ? words.integer("a physical group", INT_MIN, INT_MAX) :
-                                  words.integer("a physical group of a curve, surface or volume "
-                                                "(a boundary or material id)",
-                                                0, max_id);
+              if (words.integer("the number of physical groups of an entity (ArchDam reads "
+                                "one at most)",
+                                0, 1) == 1)
+                words.integer(d == 0 ? "a physical group of a point" :
+                                       "a physical group of a curve, surface or volume (a "
+                                       "boundary or material id)",
+                              d == 0 ? INT_MIN : 0, d == 0 ? INT_MAX : max_id);
               if (d > 0)
                 for (long long b = words.count("the number of bounding entities", 1); b > 0; --b)
                   words.integer("a bounding entity", INT_MIN, INT_MAX);
