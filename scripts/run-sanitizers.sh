@@ -14,20 +14,22 @@ jobs=${3:-1}
 # Release: deal.II's optimized library and its -O2 (its flags come after
 # ours); -g1 keeps the line tables for the reports at little compile cost.
 flags="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer -g1"
+log="$build/sanitize-build.log"
+mkdir -p "$build"
 start=$(date +%s)
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
   -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" > "$build.log" 2>&1 \
-  || { cat "$build.log"; exit 1; }
+  -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" > "$log" 2>&1 \
+  || { cat "$log"; exit 1; }
 targets=(archdam)
 for source in "$root"/tests/*.cc; do
   name=$(basename "$source" .cc)
   [[ $name =~ ^($tests)$ ]] && targets+=("tests.$name.release")
 done
-cmake --build "$build" -j"$jobs" "${targets[@]/#/--target=}" >> "$build.log" 2>&1 \
-  || { tail -40 "$build.log"; exit 1; }
+cmake --build "$build" -j"$jobs" "${targets[@]/#/--target=}" >> "$log" 2>&1 \
+  || { tail -40 "$log"; exit 1; }
 echo "build: $(( $(date +%s) - start )) s"
 # Every report ends the process with an error; leaks are checked against
 # scripts/lsan.supp, which lists only third-party libraries (OpenMPI, PETSc,
