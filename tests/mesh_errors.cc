@@ -14,7 +14,16 @@
 //    id reserved for the splitter;
 //  - a joint face without a partner: two blocks meshed separately (coincident
 //    faces that share no nodes);
-//  - a physical surface inside the model (on a joint).
+//  - a physical surface inside the model (on a joint);
+//  - malformed files, each caught before deal.II's GridIn reads them (the
+//    fuzz target fuzz_gmsh_mesh found what GridIn does not check): a count
+//    larger than the file, an element naming an undefined node or one node
+//    twice, a node defined twice, a coordinate that is not a number, an id
+//    above 254, an element type ArchDam does not read, a number that is not
+//    an integer, a misspelt section, and in format 4.1 an entity with two
+//    physical groups, parametric nodes, block sums that differ from the
+//    header, an entity dimension out of range, $Entities in a format-2 file;
+//    hexahedra that overlap (one given twice, a third on a face).
 
 #include <archdam/application/command_line.h>
 
@@ -180,7 +189,7 @@ main(int argc, char **argv)
     run("an inverted cell: node 26 moved 10 m down, through the rock cell below it", "inverted.msh");
   }
   write("degenerate.msh", first_of(11, [](auto &e) { e[5 + 7] = e[5 + 6]; }));
-  run("a degenerate hexahedron (two nodes the same)", "degenerate.msh");
+  run("a hexahedron naming one node twice", "degenerate.msh");
   write("material5.msh", first_of(1, [](auto &e) { e[3] = 5; }));
   run("material id 5 (physical volume 5) on a rock cell", "material5.msh");
   write("material0.msh", first_of(11, [](auto &e) { e[3] = 0; }));
@@ -220,5 +229,78 @@ main(int argc, char **argv)
     text.replace(text.find("$Elements\n2\n"), 12, "$Elements\n3\n3 3 2 100 1 2 4 8 6\n");
     write("joint_surface.msh", text);
     run("a physical surface (100) on the joint, inside the model", "joint_surface.msh");
+  }
+
+  // malformed files: one edit of the example (format 2.2 or 4.1) each
+  const auto edited = [](const std::string &file, const std::string &from, const std::string &to) {
+    std::string text = read(file);
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  const auto malformed = [&](const std::string &what, const std::string &name,
+                             const std::string &text) {
+    write(name, text);
+    run(what, name);
+  };
+  malformed("a node count larger than the file (line 5: 10^9 nodes)", "node_count.msh",
+            edited(ex::v2, "$Nodes\n861\n", "$Nodes\n1000000000\n"));
+  malformed("an element naming an undefined node (line 870: node 99999)", "undefined_node.msh",
+            edit_elements([&](std::vector<long> &e) {
+              if (e[0] == 1)
+                e[5] = 99999;
+              return true;
+            }));
+  malformed("node 1 defined twice (line 7)", "node_twice.msh",
+            edited(ex::v2, "\n2 -30 -15 0\n", "\n1 -30 -15 0\n"));
+  malformed("a coordinate 'nan' (line 7)", "nan.msh",
+            edited(ex::v2, "\n2 -30 -15 0\n", "\n2 -30 -15 nan\n"));
+  malformed("physical volume 300 on a rock hexahedron (line 1240)", "material300.msh",
+            first_of(1, [](auto &e) { e[3] = 300; }));
+  malformed("element type 17 (a 20-node hexahedron, line 870)", "type17.msh",
+            edit_elements([&](std::vector<long> &e) {
+              if (e[0] == 1)
+                e[1] = 17;
+              return true;
+            }));
+  malformed("the element count written 958.0 (line 869)", "count_not_integer.msh",
+            edited(ex::v2, "$Elements\n958\n", "$Elements\n958.0\n"));
+  malformed("$Nodez instead of $Nodes (line 4)", "misspelt.msh", edited(ex::v2, "$Nodes", "$Nodez"));
+  malformed("format 4.1: a point entity with two physical groups (line 6)", "two_physicals.msh",
+            edited(ex::v4, "\n1 -30 -15 -20 0 \n", "\n1 -30 -15 -20 2 7 8 \n"));
+  malformed("format 4.1: a node block with parametric coordinates (line 268)", "parametric.msh",
+            edited(ex::v4, "\n0 1 0 1\n", "\n0 1 1 1\n"));
+  malformed("format 4.1: the $Nodes header says 862 nodes, the blocks hold 861", "node_sum.msh",
+            edited(ex::v4, "\n241 861 1 861\n", "\n241 862 1 861\n"));
+  malformed("format 4.1: element block of entity dimension 7 (line 2234)", "entity_dimension.msh",
+            edited(ex::v4, "\n2 1 3 8\n", "\n7 1 3 8\n"));
+  malformed("format 4.1: the $Elements header says 959 elements, the blocks hold 958",
+            "element_sum.msh", edited(ex::v4, "\n47 958 1 958\n", "\n47 959 1 958\n"));
+  malformed("format 4.1 $Entities in a file whose header says 2.2 (line 4)", "entities_v2.msh",
+            edited(ex::v4, "4.1 0 8", "2.2 0 8"));
+  {
+    // a third hexahedron on the two connected blocks (nodes 1-8 block 0,
+    // 9-12 block 1's far side; the joint face is 2 4 6 8): block 0 again,
+    // then block 1 again listed from the joint face (its bottom) up
+    std::string blocks = two_blocks(true);
+    blocks.replace(blocks.find("$Elements\n2\n"), 12, "$Elements\n3\n");
+    const auto with = [&](const std::string &third) {
+      std::string text = blocks;
+      return text.replace(text.find("$EndElements"), 0, third + "\n");
+    };
+    malformed("block 0 given twice (line 23)", "twice.msh", with("3 5 2 10 1 1 2 4 3 5 6 8 7"));
+    malformed("a third hexahedron on the joint face (line 23)", "third.msh",
+              with("3 5 2 11 1 2 4 8 6 9 10 12 11"));
+  }
+  {
+    // node 1, the model's corner (-30, -15, -20), belongs to one rock cell
+    // only: moved onto node 53, a corner of the same cell, it collapses an
+    // edge of that cell and of no other
+    std::string        text = read(ex::v2);
+    const auto         at   = text.find("\n53 ");
+    std::istringstream node(text.substr(at + 1, text.find('\n', at + 1) - at - 1));
+    std::string        tag, x, y, z;
+    node >> tag >> x >> y >> z;
+    malformed("a degenerate hexahedron (node 1 moved onto node 53)", "collapsed_edge.msh",
+              edited(ex::v2, "\n1 -30 -15 -20\n", "\n1 " + x + " " + y + " " + z + "\n"));
   }
 }

@@ -1,5 +1,6 @@
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/gmsh_mesh.h>
+#include <archdam/geometry/gmsh_structure.h>
 
 #include <deal.II/grid/grid_in.h>
 
@@ -38,8 +39,9 @@ namespace archdam::geometry
     }
 
     /// The checks GridIn leaves to debug builds, or does not make: the header
-    /// names an ASCII file of a version it reads, and the element section is
-    /// complete. Returns the file's text.
+    /// names an ASCII file of a version it reads, the element section is
+    /// complete, and the whole file is well formed (gmsh_structure.h).
+    /// Returns the file's text.
     std::string
     checked_text(const std::string &filename)
     {
@@ -67,6 +69,7 @@ namespace archdam::geometry
                                  "Mesh.Binary = 0, the default).");
       if (text.find("$EndElements") == std::string::npos)
         throw InputError(where + " is incomplete: it has no $EndElements (truncated file?).");
+      check_gmsh_structure(text, where);
       return text;
     }
   } // namespace
@@ -94,10 +97,5 @@ namespace archdam::geometry
                            "ArchDam from the material ids.");
         throw InputError("Mesh/Gmsh/File: '" + filename + "' cannot be read: " + message);
       }
-    if (!tria.all_reference_cells_are_hyper_cube())
-      throw InputError("Mesh/Gmsh/File: '" + filename +
-                       "' holds cells other than hexahedra; ArchDam needs a hexahedral "
-                       "mesh (in Gmsh: Transfinite and Recombine, or Mesh.SubdivisionAlgorithm "
-                       "= 2).");
   }
 } // namespace archdam::geometry

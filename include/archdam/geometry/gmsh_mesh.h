@@ -22,8 +22,10 @@ namespace archdam::geometry
    * gmsh_reader). GridIn turns cells given with inverted vertex order right
    * side out; the cell shapes are checked afterwards (check_cell_shapes()).
    *
-   * A file that is missing, not a .msh, binary, of another version, truncated
-   * or otherwise unreadable is an InputError naming the file and the problem.
+   * A file that is missing, not a .msh, binary, of another version, truncated,
+   * malformed (check_gmsh_structure(), before GridIn sees it), of other cells
+   * than hexahedra or otherwise unreadable is an InputError naming the file
+   * and the problem.
    */
   void
   read_gmsh(const std::string &filename, dealii::Triangulation<dim> &tria);
