@@ -16,8 +16,9 @@ dam, cut at the downstream end of the dam so that the canyon's section frames
 it. The water is left out.
 
 pvpython and pvbatch of Debian's ParaView render through X: run them under
-xvfb-run on a machine without a display. Only Debian's paraview and xvfb
-packages are needed; the project itself does not depend on them.
+xvfb-run on a machine without a display. Only Debian's paraview,
+python3-paraview (pvpython) and xvfb packages are needed; the project itself
+does not depend on them.
 """
 
 import argparse
@@ -62,6 +63,25 @@ def threshold(source, array, lower, upper):
     else:
         t.ThresholdRange = [lower, upper]
     return t
+
+
+def colour_bar(lut, view, title, position, label_format):
+    """A vertical colour bar at position (view fractions), dark text."""
+    bar = GetScalarBar(lut, view)
+    bar.Title = title
+    bar.HorizontalTitle = 1
+    bar.ComponentTitle = ""
+    bar.Orientation = "Vertical"
+    bar.WindowLocation = "Any Location"
+    bar.Position = position
+    bar.ScalarBarLength = 0.5
+    bar.TitleFontSize = 18
+    bar.LabelFontSize = 16
+    bar.TitleColor = [0.1, 0.1, 0.1]
+    bar.LabelColor = [0.1, 0.1, 0.1]
+    bar.RangeLabelFormat = label_format
+    bar.Visibility = 1
+    return bar
 
 
 def nearest(values, t):
@@ -188,21 +208,8 @@ def main():
         lut.ApplyPreset("Inferno (matplotlib)", True)
         lut.RescaleTransferFunction(lo, hi)
     lut.AutomaticRescaleRangeMode = "Never"
-    dam_bar = GetScalarBar(lut, view)
-    dam_bar.Title = unit_name
-    dam_bar.HorizontalTitle = 1
-    dam_bar.ComponentTitle = ""
-    dam_bar.Orientation = "Vertical"
-    dam_bar.WindowLocation = "Any Location"
-    dam_bar.Position = [0.87, 0.25]
-    dam_bar.ScalarBarLength = 0.5
-    dam_bar.TitleFontSize = 18
-    dam_bar.LabelFontSize = 16
-    dam_bar.TitleColor = [0.1, 0.1, 0.1]
-    dam_bar.LabelColor = [0.1, 0.1, 0.1]
-    dam_bar.RangeLabelFormat = "%-#.2f"
+    dam_bar = colour_bar(lut, view, unit_name, [0.87, 0.25], "%-#.2f")
     dam_bar.AddRangeLabels = 1
-    dam_bar.Visibility = 1
 
     # --- the rock as context ------------------------------------------------
     # The VTU cells do not share points (every cell carries its own), so merge
@@ -275,20 +282,7 @@ def main():
                           omax, 0.00, 0.27, 0.10]
         olut.RescaleTransferFunction(0.0, omax)
         olut.AutomaticRescaleRangeMode = "Never"
-        joint_bar = GetScalarBar(olut, view)
-        joint_bar.Title = "Joint opening\n[mm]"
-        joint_bar.HorizontalTitle = 1
-        joint_bar.ComponentTitle = ""
-        joint_bar.Orientation = "Vertical"
-        joint_bar.WindowLocation = "Any Location"
-        joint_bar.Position = [0.04, 0.25]
-        joint_bar.ScalarBarLength = 0.5
-        joint_bar.TitleFontSize = 18
-        joint_bar.LabelFontSize = 16
-        joint_bar.TitleColor = [0.1, 0.1, 0.1]
-        joint_bar.LabelColor = [0.1, 0.1, 0.1]
-        joint_bar.RangeLabelFormat = "%-#.1f"
-        joint_bar.Visibility = 1
+        colour_bar(olut, view, "Joint opening\n[mm]", [0.04, 0.25], "%-#.1f")
 
     # --- titles -------------------------------------------------------------
     case = args.title or summary_case(results) or os.path.basename(results.rstrip("/"))
