@@ -466,6 +466,7 @@ main(int argc, char **argv)
     fs::remove_all(directory);
     fs::create_directories(directory);
     fs::copy("resumed/checkpoint", directory + "/checkpoint");
+    fs::copy("resumed/histories.csv", directory + "/histories.csv");
     spoil(directory + "/checkpoint");
     return std::vector<std::string>{"--resume", "--set", "Output/Directory=" + directory};
   };
@@ -497,6 +498,10 @@ main(int argc, char **argv)
                         f.put(static_cast<char>(~byte));
                       }),
                "rank_0000.bin' is damaged (checksum mismatch)");
+  // A resume that fails leaves the results of the run it was to continue.
+  std::cout << "  the earlier histories.csv kept: "
+            << verdict(read("damaged/histories.csv") == read("resumed/histories.csv"))
+            << std::endl;
   expect_error("--resume with --mesh-only", {"--resume", "--mesh-only"},
                "--mesh-only and --resume exclude each other");
 

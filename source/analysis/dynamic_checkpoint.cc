@@ -80,17 +80,24 @@ namespace archdam::analysis
   }
 
   void
-  Simulation::read_checkpoint()
+  Simulation::check_checkpoint()
   {
-    const std::string  payload =
-      output::CheckpointFiles(p.output.directory, comm).read_payload(*resume_from);
-    std::istringstream in(payload);
+    resume_payload = output::CheckpointFiles(p.output.directory, comm).read_payload(*resume_from);
+    std::istringstream in(resume_payload);
     std::uint64_t      partition = 0;
     binary::read(in, partition);
     if (Utilities::MPI::logical_or(partition != partition_signature(*fe_space), comm))
       throw InputError("--resume: the model is divided among the MPI processes differently "
                        "from the run that wrote the checkpoint (another partition of the "
                        "mesh); each process can only continue its own part.");
+  }
+
+  void
+  Simulation::read_checkpoint()
+  {
+    std::istringstream in(resume_payload);
+    std::uint64_t      partition = 0;
+    binary::read(in, partition); // checked by check_checkpoint()
     load_step_state(in);
     binary::read_all(in, peak_stress.value, peak_stress.where, peak_stress_time);
     history->load(in);

@@ -171,10 +171,19 @@ namespace archdam::analysis
           }
         catch (const RunStopped &stop)
           {
-            // A checkpoint of the last good step, without the one that failed.
+            // A checkpoint of the last good step, without the one that failed;
+            // if it cannot be written (a full disk), the stop is still reported.
             std::istringstream before(step_before);
             load_step_state(before);
-            write_checkpoint();
+            std::string checkpoint_problem;
+            try
+              {
+                write_checkpoint();
+              }
+            catch (const InputError &e)
+              {
+                checkpoint_problem = e.what();
+              }
             // The results up to the last good step stay: the histories end
             // with it, the summary says why and when the run stopped.
             history->finish();
@@ -185,6 +194,8 @@ namespace archdam::analysis
             summary.set("stopped/step", stop.step);
             summary.set("stopped/time [s]", stop.time);
             summary.set("stopped/last complete time [s]", (n - 1) * dt);
+            if (!checkpoint_problem.empty())
+              summary.set("stopped/checkpoint not written", checkpoint_problem);
             energy->add_to(summary);
             write_summary();
             throw;

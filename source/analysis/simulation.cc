@@ -45,6 +45,8 @@ namespace archdam::analysis
 
     if (!fe_space)
       setup_model();
+    if (resume_from)
+      check_checkpoint();
     if (p.analysis.runs("static") && !resume_from)
       run_static_stage();
     if (p.analysis.runs("modal") && !resume_from)

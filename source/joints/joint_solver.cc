@@ -136,8 +136,8 @@ namespace archdam::joints
             {
               state[i]   = PairState::slip;
               damaged[i] = true;
-              d[1]       = f[1] / t;
-              d[2]     = f[2] / t;
+              d[1]          = f[1] / t;
+              d[2]          = f[2] / t;
               slip_ratio[i] = 0.;
               return true;
             }
@@ -164,7 +164,9 @@ namespace archdam::joints
               {
                 d[1]          = q1 / q;
                 d[2]          = q2 / q;
-                slip_ratio[i] = std::min(1., tau / q);
+                // at the capacity itself (|q| = tau within the tolerance) the
+                // Newton row would leave f_t free across d: keep d fixed there
+                slip_ratio[i] = q > tau ? tau / q : 0.;
               }
             return misfit > p.gap_tolerance || along < -p.gap_tolerance;
           }

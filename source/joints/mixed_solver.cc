@@ -219,6 +219,17 @@ namespace archdam::joints
         bool changed = false;
         for (unsigned int i = 0; i < pairs.size(); ++i)
           changed = update_state(i) || changed;
+        // The Newton step meets the slip law f_t = tau q / |q| only at
+        // convergence: a slipping pair whose force is off it by more than
+        // Force tolerance (relative to the pair's force) is not converged.
+        for (unsigned int i = 0; i < pairs.size() && !changed; ++i)
+          if (state[i] == PairState::slip)
+            {
+              const double *f   = &force[dim * i];
+              const double  tau = strength(i).shear_capacity(f[0]);
+              changed = std::hypot(f[1] - tau * direction[i][1], f[2] - tau * direction[i][2]) >
+                        p.force_tolerance * std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+            }
         step.force_change = relative_change(before);
         step.gap_residual = gap_residual(step.worst_pair);
         if (!changed && step.gap_residual <= p.gap_tolerance)
@@ -315,6 +326,8 @@ namespace archdam::joints
             if (state[i] == PairState::slip && t > 0.)
               for (const unsigned int k : {1u, 2u})
                 direction[i][k] = f[k] / t;
+            if (state[i] == PairState::slip)
+              slip_ratio[i] = 0.; // the next active set starts with d held fixed
             states[i] = static_cast<double>(state[i]);
           }
         step.force_change = relative_change(before);

@@ -157,10 +157,15 @@ namespace archdam::output
         << "\n";
       write_synced(fresh + "/manifest.txt", m.str());
       sync_directory(fresh);
+      // The newest complete checkpoint stays until the next one has taken
+      // its name: checkpoint/ becomes checkpoint.old/ (an older .old goes
+      // first), and a lone checkpoint.old/ stays until fresh is in place.
       std::error_code ec;
-      fs::remove_all(old, ec);
-      if (fs::exists(current))
-        fs::rename(current, old, ec);
+      if (fs::exists(current, ec))
+        {
+          fs::remove_all(old, ec);
+          fs::rename(current, old, ec);
+        }
       if (!ec)
         fs::rename(fresh, current, ec);
       if (ec)

@@ -189,11 +189,17 @@ namespace archdam::analysis
     /// Output/Directory/checkpoint (output/checkpoint.h).
     void
     write_checkpoint();
-    /// Continue from the checkpoint resume_from names.
+    /// Read and check the checkpoint resume_from names (files, checksums,
+    /// partition) into resume_payload, before any result file is reopened:
+    /// a resume that fails leaves the earlier results as they were.
+    void
+    check_checkpoint();
+    /// Continue from resume_payload.
     void
     read_checkpoint();
     /// Set by run(true): the checkpoint the dynamic stage continues from.
     std::unique_ptr<output::CheckpointManifest> resume_from;
+    std::string                                 resume_payload;
 
     /// The energy balance from the current state (dynamic_stage.cc).
     void

@@ -103,7 +103,8 @@ namespace archdam::joints
      * tolerance (relative), the slip direction then along f_t; slip -> stick
      * when the augmented tangential force q = f_t + r dw_t (Alart-Curnier,
      * r = augmentation, dw_t the slip increment) falls inside the capacity,
-     * else the slip direction becomes q / |q| and slip_ratio tau / |q|. The
+     * else the slip direction becomes q / |q| and slip_ratio tau / |q| (0
+     * with |q| at the capacity itself, where d is then held fixed). The
      * tolerance bands keep a pair exactly at the stick/slip limit from
      * switching back and forth. Returns whether the state changed or, in
      * slip, the slip increment is not along the direction (by more than Gap
