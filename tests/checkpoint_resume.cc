@@ -479,6 +479,18 @@ main(int argc, char **argv)
                         std::ofstream(c / "manifest.txt") << text;
                       }),
                "was written by 3 MPI processes, this run has " + std::to_string(n_ranks));
+  expect_error("--resume with a manifest whose step is not a number",
+               spoilt("manifest",
+                      [](const fs::path &c) {
+                        auto text = read(c / "manifest.txt");
+                        const auto at = text.find("step = ");
+                        text.replace(at, text.find('\n', at) - at, "step = ten");
+                        std::ofstream(c / "manifest.txt") << text;
+                      }),
+               "manifest/checkpoint/manifest.txt' is damaged (step)");
+  expect_error("--resume with an empty manifest",
+               spoilt("emptied", [](const fs::path &c) { std::ofstream(c / "manifest.txt"); }),
+               "emptied/checkpoint/manifest.txt' is damaged or of another format version");
   expect_error("--resume with rank 0's file cut in half",
                spoilt("truncated",
                       [](const fs::path &c) {
