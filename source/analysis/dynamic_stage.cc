@@ -97,12 +97,12 @@ namespace archdam::analysis
           newmark = std::make_unique<time::NewmarkIntegrator>(
             p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
             fe_space->constraints, false,
-            massed_foundation ? massed_foundation->dashpots() : nullptr);
+            massed_foundation ? massed_foundation->dashpots() : nullptr, condensed_interface());
         }
       else
         newmark = std::make_unique<time::NewmarkIntegrator>(
           p.time_integration, mass_matrix, stiffness_matrix, rayleigh, fe_space->constraints,
-          massed_foundation ? massed_foundation->dashpots() : nullptr);
+          massed_foundation ? massed_foundation->dashpots() : nullptr, condensed_interface());
     }
     if (node_pairs)
       start_dynamic_joints(*newmark);

@@ -28,6 +28,15 @@ namespace archdam::analysis
    * one step from the unloaded, closed joints; gravity is carried through the
    * closed joints.
    */
+  std::vector<types::global_dof_index>
+  Simulation::condensed_interface() const
+  {
+    if (node_pairs && p.joints.solver == "mixed" &&
+        p.joints.mixed_solves == "condensed on the pairs")
+      return node_pairs->interface();
+    return {};
+  }
+
   void
   Simulation::solve_static_with_joints(const SparseMatrix             &stiffness,
                                        const time::FactorizedOperator &stiffness_factor,

@@ -27,7 +27,7 @@ namespace archdam::analysis
                                                             {1., &fluid_operators->G}});
       const SparseMatrix      &K = fluid_operators ? with_water : stiffness_matrix;
       time::FactorizedOperator stiffness_factor;
-      stiffness_factor.factorize(K, true);
+      stiffness_factor.factorize(K, true, condensed_interface());
       Vector rhs = static_load;
       fe_space->constraints.set_zero(rhs);
       if (node_pairs)

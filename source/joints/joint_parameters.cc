@@ -32,6 +32,17 @@ namespace archdam::joints
                       "the coupling between pairs of the same or adjacent joints "
                       "(the paper's sparse approximation).",
                       Patterns::Selection("all joints|neighbouring joints"));
+    prm.add_parameter("Mixed method solves", mixed_solves,
+                      "How a solve of the mixed method reaches the pairs (numerics.md "
+                      "§3): condensed on the pairs = the stage's matrix factorized by "
+                      "MUMPS with the pairs' unknowns eliminated last, C from the Schur "
+                      "complement of those unknowns, and one back-substitution per solve "
+                      "split around the contact problem (forward elimination, contact "
+                      "problem, backward substitution); predictor and corrector = a "
+                      "plain factorization, C from one back-substitution per pair "
+                      "unknown, and two back-substitutions per solve (the pair forces "
+                      "held, then their change), for comparison.",
+                      Patterns::Selection("condensed on the pairs|predictor and corrector"));
     prm.add_parameter("Friction coefficient", law.friction_coefficient,
                       "Coulomb friction coefficient mu of the joint faces.",
                       Patterns::Double(0.));

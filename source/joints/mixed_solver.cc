@@ -4,12 +4,29 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
 namespace archdam::joints
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// The paper's sparse approximation of C: the coupling of pairs on
+    /// joints more than one apart dropped.
+    void
+    keep_neighbouring_joints(const NodePairs &pairs, std::vector<double> &C)
+    {
+      const unsigned int m = dim * pairs.size();
+      for (unsigned int j = 0; j < m; ++j)
+        for (unsigned int i = 0; i < m; ++i)
+          if (std::abs(static_cast<int>(pairs[i / dim].joint) -
+                       static_cast<int>(pairs[j / dim].joint)) > 1)
+            C[static_cast<std::size_t>(j) * m + i] = 0.;
+    }
+  } // namespace
 
   std::vector<double>
   flexibility_matrix(const NodePairs &pairs, const time::FactorizedOperator &A_factor,
@@ -65,11 +82,7 @@ namespace archdam::joints
       }
 
     if (neighbours_only)
-      for (unsigned int j = 0; j < m; ++j)
-        for (unsigned int i = 0; i < m; ++i)
-          if (std::abs(static_cast<int>(pairs[i / dim].joint) -
-                       static_cast<int>(pairs[j / dim].joint)) > 1)
-            C[static_cast<std::size_t>(j) * m + i] = 0.;
+      keep_neighbouring_joints(pairs, C);
     return C;
   }
 
@@ -93,6 +106,37 @@ namespace archdam::joints
     : JointSolver(p, pairs, h)
     , A_factor(A_factor)
   {}
+
+  void
+  MixedJointSolver::build_from_schur_complement(const time::CondensedFactorization &condensed)
+  {
+    const unsigned int m     = dim * pairs.size();
+    const auto        &gamma = condensed.interface();
+    B_interface.assign(m, {});
+    for (unsigned int j = 0; j < m; ++j)
+      pairs[j / dim].for_each_B_entry(j % dim, [&](const types::global_dof_index d,
+                                                   const double v) {
+        const auto g = std::lower_bound(gamma.begin(), gamma.end(), d) - gamma.begin();
+        B_interface[j].emplace_back(static_cast<unsigned int>(g), v);
+      });
+
+    // G = S^{-1} B^T, C = B G (numerics.md §3: C = B A^{-1} B^T, since the
+    // load B^T f lies on the interface).
+    const unsigned int k = gamma.size();
+    G.reinit(k, m);
+    for (unsigned int j = 0; j < m; ++j)
+      for (const auto &[g, v] : B_interface[j])
+        G(g, j) += v;
+    condensed.solve_interface(G);
+    C.assign(static_cast<std::size_t>(m) * m, 0.);
+    for (unsigned int j = 0; j < m; ++j)
+      for (unsigned int i = 0; i < m; ++i)
+        for (const auto &[g, v] : B_interface[i])
+          C[static_cast<std::size_t>(j) * m + i] += v * G(g, j);
+    if (p.coupling == "neighbouring joints")
+      keep_neighbouring_joints(pairs, C);
+    interface_x.reinit(k);
+  }
 
   void
   MixedJointSolver::set_relative_displacement()
@@ -368,30 +412,56 @@ namespace archdam::joints
     if (C.empty() && m > 0)
       {
         // C is built once, with the first right-hand side's layout
-        // (multi-column solves, 64 columns at a time).
+        // (multi-column solves, 64 columns at a time, or from the Schur
+        // complement).
         const auto start = std::chrono::steady_clock::now();
-        C = flexibility_matrix(pairs, A_factor, r, 64, p.coupling == "neighbouring joints");
+        if (const auto *condensed = A_factor.condensed())
+          build_from_schur_complement(*condensed);
+        else
+          C = flexibility_matrix(pairs, A_factor, r, 64, p.coupling == "neighbouring joints");
         build_time =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         augmentation = augmentation_of(C, h);
       }
 
-    // 1. predictor: the pair forces held at their committed values.
-    rhs = r;
-    pairs.add_transpose(force_committed, -1., rhs);
-    A_factor.solve(x, rhs);
-    pairs.relative_displacement(x, w);
-    for (unsigned int j = 0; j < m; ++j)
-      w[j] = w_base[j] + h * w[j];
-    force = force_committed;
+    const auto *condensed = A_factor.condensed();
+    if (condensed)
+      {
+        // 1. forward elimination: the interface's response to r at zero
+        //    pair forces, z = S^{-1} y; s = w_base + h B z.
+        condensed->condense(r, reduced);
+        std::copy(reduced.begin(), reduced.end(), interface_x.begin());
+        condensed->solve_interface(interface_x);
+        s.assign(m, 0.);
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            double bz = 0.;
+            for (const auto &[g, v] : B_interface[j])
+              bz += v * interface_x[g];
+            s[j] = w_base[j] + h * bz;
+          }
+        force = force_committed;
+        set_relative_displacement();
+      }
+    else
+      {
+        // 1. predictor: the pair forces held at their committed values.
+        rhs = r;
+        pairs.add_transpose(force_committed, -1., rhs);
+        A_factor.solve(x, rhs);
+        pairs.relative_displacement(x, w);
+        for (unsigned int j = 0; j < m; ++j)
+          w[j] = w_base[j] + h * w[j];
+        force = force_committed;
 
-    // 2. the contact problem on the pairs: w = s - h C f with s = w + h C f_n
-    //    the relative displacement at zero pair forces.
-    s = w;
-    for (unsigned int j = 0; j < m; ++j)
-      if (force_committed[j] != 0.)
-        for (unsigned int k = 0; k < m; ++k)
-          s[k] += h * C[static_cast<std::size_t>(j) * m + k] * force_committed[j];
+        // 2. the contact problem on the pairs: w = s - h C f with s = w + h C f_n
+        //    the relative displacement at zero pair forces.
+        s = w;
+        for (unsigned int j = 0; j < m; ++j)
+          if (force_committed[j] != 0.)
+            for (unsigned int k = 0; k < m; ++k)
+              s[k] += h * C[static_cast<std::size_t>(j) * m + k] * force_committed[j];
+      }
     start_directions();
 
     // The active-set iteration first (exact and fast when the states settle);
@@ -405,6 +475,16 @@ namespace archdam::joints
         damaged = damage_at_start;
         state   = states_at_start;
         projected_gauss_seidel(step);
+      }
+
+    if (condensed)
+      {
+        // 3. backward substitution from x_Γ = z - G f.
+        dealii::Vector<double> f(force.begin(), force.end()), Gf(interface_x.size());
+        G.vmult(Gf, f);
+        interface_x -= Gf;
+        condensed->expand(std::vector<double>(interface_x.begin(), interface_x.end()), x);
+        return step;
       }
 
     // 3. corrector: x += A^{-1} (-B^T (f - f_n)).

@@ -1,5 +1,7 @@
 #include <archdam/joints/node_pairs.h>
 
+#include <algorithm>
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -204,5 +206,18 @@ namespace archdam::joints
       if (pairs[p].position.distance(x) < pairs[best].position.distance(x))
         best = p;
     return best;
+  }
+  std::vector<types::global_dof_index>
+  NodePairs::interface() const
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &pair : pairs)
+      for (unsigned int k = 0; k < dim; ++k)
+        pair.for_each_B_entry(k, [&](const types::global_dof_index d, double) {
+          dofs.push_back(d);
+        });
+    std::sort(dofs.begin(), dofs.end());
+    dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+    return dofs;
   }
 } // namespace archdam::joints

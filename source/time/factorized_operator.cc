@@ -2,6 +2,7 @@
 #include <archdam/time/factorized_operator.h>
 
 #include <deal.II/lac/exceptions.h>
+#include <deal.II/lac/vector.h>
 
 namespace archdam::time
 {
@@ -14,9 +15,18 @@ namespace archdam::time
   }
 
   void
-  FactorizedOperator::factorize(const SparseMatrix &A, const bool positive_definite)
+  FactorizedOperator::factorize(const SparseMatrix &A, const bool positive_definite,
+                                const std::vector<types::global_dof_index> &interface)
   {
-    factorize(static_cast<Mat>(A), positive_definite);
+    if (interface.empty())
+      factorize(static_cast<Mat>(A), positive_definite);
+    else
+      {
+        if (ksp != nullptr)
+          petsc_check(KSPDestroy(&ksp));
+        condensed_factor =
+          std::make_unique<CondensedFactorization>(A, positive_definite, interface);
+      }
   }
 
   void
@@ -24,6 +34,7 @@ namespace archdam::time
   {
     if (ksp != nullptr)
       petsc_check(KSPDestroy(&ksp));
+    condensed_factor.reset();
     petsc_check(MatSetOption(mat, MAT_SYMMETRIC, PETSC_TRUE));
     petsc_check(MatSetOption(mat, MAT_SPD, positive_definite ? PETSC_TRUE : PETSC_FALSE));
 
@@ -42,6 +53,16 @@ namespace archdam::time
   void
   FactorizedOperator::solve(Vector &x, const Vector &b) const
   {
+    if (condensed_factor)
+      {
+        // forward elimination, the interface's Schur complement, backward
+        std::vector<double> y;
+        condensed_factor->condense(b, y);
+        dealii::Vector<double> x_gamma(y.begin(), y.end());
+        condensed_factor->solve_interface(x_gamma);
+        condensed_factor->expand(std::vector<double>(x_gamma.begin(), x_gamma.end()), x);
+        return;
+      }
     Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
     petsc_check(KSPSolve(ksp, b, x));
   }
@@ -49,7 +70,8 @@ namespace archdam::time
   void
   FactorizedOperator::solve(Mat X, Mat B) const
   {
-    Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
+    AssertThrow(ksp != nullptr,
+                ExcMessage("multi-column solve() needs the plain factorization"));
     petsc_check(KSPMatSolve(ksp, B, X));
   }
 } // namespace archdam::time

@@ -42,7 +42,8 @@ namespace archdam::time
                                        const SparseMatrix              &stiffness,
                                        const std::pair<double, double>  rayleigh,
                                        const AffineConstraints<double> &constraints,
-                                       const Vector                    *boundary_dashpots)
+                                       const Vector                    *boundary_dashpots,
+                                       const std::vector<types::global_dof_index> &factor_interface)
     : p(p)
     , dt(p.time_step)
     , M(mass)
@@ -65,7 +66,7 @@ namespace archdam::time
                         static_cast<Mat>(M), SAME_NONZERO_PATTERN) == 0,
                 ExcMessage("PETSc MatAXPY failed."));
     add_dashpots_to_effective_matrix();
-    effective_operator.factorize(effective_matrix, true);
+    effective_operator.factorize(effective_matrix, true, factor_interface);
 
     const IndexSet owned = M.locally_owned_range_indices();
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
@@ -90,7 +91,8 @@ namespace archdam::time
                                        const SparseMatrix              &stiffness,
                                        const AffineConstraints<double> &constraints,
                                        const bool                       positive_definite,
-                                       const Vector                    *boundary_dashpots)
+                                       const Vector                    *boundary_dashpots,
+                                       const std::vector<types::global_dof_index> &factor_interface)
     : p(p)
     , dt(p.time_step)
     , M(mass)
@@ -110,7 +112,7 @@ namespace archdam::time
                           SAME_NONZERO_PATTERN) == 0,
                   ExcMessage("PETSc MatAXPY failed."));
     add_dashpots_to_effective_matrix();
-    effective_operator.factorize(effective_matrix, positive_definite);
+    effective_operator.factorize(effective_matrix, positive_definite, factor_interface);
 
     const IndexSet owned = M.locally_owned_range_indices();
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,

@@ -165,6 +165,10 @@ namespace archdam::analysis
     write_fields();
 
     // Contraction joints/Model = frictional contact (joint_stages.cc).
+    /// The pairs' DOFs when the stages' factorizations are condensed on them
+    /// (Mixed method solves = condensed on the pairs), else empty.
+    std::vector<dealii::types::global_dof_index>
+    condensed_interface() const;
     /// K u = F_static with the joints in contact (the mixed method with K).
     void
     solve_static_with_joints(const SparseMatrix             &stiffness,

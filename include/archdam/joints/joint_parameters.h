@@ -27,6 +27,7 @@ namespace archdam::joints
     std::string solver = "mixed";
     /// all joints | neighbouring joints
     std::string coupling = "all joints";
+    std::string mixed_solves = "condensed on the pairs";
     JointLaw    law;
     /// "k: name = value, ...; ..." overrides of the law for single joints
     std::string per_joint;

@@ -136,7 +136,10 @@ namespace archdam::joints
    * once; the flexibility matrix C = B A^{-1} B^T on the pair DOFs is built
    * once; each solve is a predictor (one back-substitution), the contact
    * problem on the pairs alone, and a corrector (a second back-substitution,
-   * only if a force changed).
+   * only if a force changed). When A's factorization is condensed on the
+   * pairs' DOFs, C comes from its Schur complement, and a solve is the
+   * forward elimination, the contact problem and the backward substitution:
+   * one back-substitution in all.
    * The contact problem w = s - h C f with the law at every pair is solved
    * by an active-set (semi-smooth Newton) iteration: with the states and
    * slip directions linearized, the law is linear in f (stick: w = w_target
@@ -188,8 +191,19 @@ namespace archdam::joints
     void
     projected_gauss_seidel(ContactStep &step);
 
+    /// With A factorized condensed on the pairs' DOFs (Contraction
+    /// joints/Mixed method solves): G = S^{-1} B^T on the interface and
+    /// C = B G from its Schur complement S, the interface's B.
+    void
+    build_from_schur_complement(const time::CondensedFactorization &condensed);
+
     const time::FactorizedOperator &A_factor;
     std::vector<double>             C;
+    dealii::LAPACKFullMatrix<double> G;
+    /// B on the interface: for every pair unknown its (interface index, value).
+    std::vector<std::vector<std::pair<unsigned int, double>>> B_interface;
+    std::vector<double>                                       reduced;
+    dealii::Vector<double>                                    interface_x;
     /// Relative displacement of the pairs at zero pair forces.
     std::vector<double> s;
     /// LU of the last fixed-state system and the states and slip directions

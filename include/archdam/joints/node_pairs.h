@@ -88,6 +88,11 @@ namespace archdam::joints
     void
     add_transpose(const std::vector<double> &f, double factor, Vector &rhs) const;
 
+    /// Every DOF the pair map B touches, sorted: the interface the mixed
+    /// method's factorization can be condensed on (time/condensed_factorization.h).
+    std::vector<dealii::types::global_dof_index>
+    interface() const;
+
     /// The pair nearest to @p p.
     unsigned int
     nearest(const dealii::Point<dim> &p) const;

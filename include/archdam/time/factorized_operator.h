@@ -1,8 +1,12 @@
 #pragma once
 
 #include <archdam/base/types.h>
+#include <archdam/time/condensed_factorization.h>
 
 #include <petscksp.h>
+
+#include <memory>
+#include <vector>
 
 namespace archdam::time
 {
@@ -25,8 +29,12 @@ namespace archdam::time
 
     /// Factorize the symmetric matrix A (kept referenced by PETSc).
     /// `positive_definite` selects Cholesky (true) or symmetric LDL^T.
+    /// With an @p interface, the factorization is condensed on it instead
+    /// (CondensedFactorization: MUMPS directly, the interface eliminated
+    /// last); solve() then runs its three parts.
     void
-    factorize(const SparseMatrix &A, bool positive_definite);
+    factorize(const SparseMatrix &A, bool positive_definite,
+              const std::vector<dealii::types::global_dof_index> &interface = {});
 
     /// The same for a matrix PETSc holds directly (kept referenced by PETSc).
     void
@@ -44,10 +52,18 @@ namespace archdam::time
     bool
     is_factorized() const
     {
-      return ksp != nullptr;
+      return ksp != nullptr || condensed_factor != nullptr;
+    }
+
+    /// The condensed factorization, if factorize() was given an interface.
+    const CondensedFactorization *
+    condensed() const
+    {
+      return condensed_factor.get();
     }
 
   private:
-    KSP ksp = nullptr;
+    KSP                                     ksp = nullptr;
+    std::unique_ptr<CondensedFactorization> condensed_factor;
   };
 } // namespace archdam::time

@@ -69,6 +69,8 @@ namespace archdam::time
    * and a step costs two matrix-vector products and one back-substitution.
    * Optional @p boundary_dashpots c (a diagonal damping, the viscous boundary
    * of the foundation) add beta1 dt diag(c) to Kbar and c v^p to the load.
+   * With a @p factor_interface (the joints' pair DOFs) Kbar's factorization
+   * is condensed on it (FactorizedOperator::factorize()).
    */
   class NewmarkIntegrator
   {
@@ -78,7 +80,8 @@ namespace archdam::time
                       const SparseMatrix                      &stiffness,
                       std::pair<double, double>                rayleigh,
                       const dealii::AffineConstraints<double> &constraints,
-                      const Vector *boundary_dashpots = nullptr);
+                      const Vector *boundary_dashpots = nullptr,
+                      const std::vector<dealii::types::global_dof_index> &factor_interface = {});
 
     /**
      * The same scheme for M a + D v + K u = F with a general damping matrix D
@@ -96,7 +99,8 @@ namespace archdam::time
                       const SparseMatrix                      &stiffness,
                       const dealii::AffineConstraints<double> &constraints,
                       bool                                     positive_definite,
-                      const Vector *boundary_dashpots = nullptr);
+                      const Vector *boundary_dashpots = nullptr,
+                      const std::vector<dealii::types::global_dof_index> &factor_interface = {});
 
     /**
      * Solver of one step's Kbar da = rhs. The default is the back-substitution

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <archdam/base/types.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace archdam::time
+{
+  /**
+   * A symmetric sparse matrix A factorized once by MUMPS with the unknowns
+   * of an interface set Γ eliminated last, so that the factorization also
+   * yields the Schur complement S = A_ΓΓ - A_ΓI A_II^{-1} A_IΓ (dense, on
+   * every rank). A solve of A x = b with a load on Γ that is known only
+   * after the interface is looked at splits into
+   *   condense(): y = b_Γ - A_ΓI A_II^{-1} b_I  (forward elimination),
+   *   the interface problem S x_Γ = y - (load on Γ), solved by the caller,
+   *   expand():   x_I = A_II^{-1} (b_I - A_IΓ x_Γ)  (backward substitution),
+   * which together cost one back-substitution (MUMPS's reduced right-hand
+   * side, ICNTL(19) and ICNTL(26)). The contact problem of the joints is
+   * such an interface problem (numerics.md §3, paper eq. 2.5-2.8).
+   * Under MPI the matrix enters distributed; the right-hand side, the
+   * reduced right-hand side and the solution pass through rank 0.
+   */
+  class CondensedFactorization
+  {
+  public:
+    /// Factorize A (Cholesky if @p positive_definite, else LDL^T) with the
+    /// global unknowns @p interface (sorted, the same on every rank) last.
+    CondensedFactorization(const SparseMatrix &A, bool positive_definite,
+                           const std::vector<dealii::types::global_dof_index> &interface);
+    ~CondensedFactorization();
+    CondensedFactorization(const CondensedFactorization &) = delete;
+    CondensedFactorization &
+    operator=(const CondensedFactorization &) = delete;
+
+    /// The interface unknowns, in the order of S and of the reduced vectors.
+    const std::vector<dealii::types::global_dof_index> &
+    interface() const
+    {
+      return gamma;
+    }
+
+    /// v = S^{-1} v (S factorized densely, on every rank).
+    void
+    solve_interface(dealii::Vector<double> &v) const;
+    /// V = S^{-1} V for every column of V.
+    void
+    solve_interface(dealii::LAPACKFullMatrix<double> &V) const;
+
+    /// y = b_Γ - A_ΓI A_II^{-1} b_I, on every rank. Must be followed by
+    /// expand() before the next condense().
+    void
+    condense(const Vector &b, std::vector<double> &y) const;
+
+    /// The full solution x from the interface values x_Γ (the same on every
+    /// rank) and the right-hand side of the last condense().
+    void
+    expand(const std::vector<double> &x_gamma, Vector &x) const;
+
+  private:
+    struct Mumps;
+    std::unique_ptr<Mumps>                   mumps;
+    std::vector<dealii::types::global_dof_index>     gamma;
+    dealii::LAPACKFullMatrix<double>         schur; ///< factorized
+  };
+} // namespace archdam::time

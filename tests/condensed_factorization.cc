@@ -1,0 +1,161 @@
+// The factorization condensed on an interface (time/condensed_factorization.h)
+// against the plain factorization of the same matrix (time/factorized_operator.h,
+// PETSc's MUMPS Cholesky), a second method:
+// - S^{-1} = (A^{-1})_ΓΓ: the interface block of A^{-1} e_g for every interface
+//   unknown g (the Schur complement's inverse is that block of the inverse);
+// - condense(), S x_Γ = y - q_Γ, expand() = A^{-1} (b - q) for a random b and
+//   a load q on the interface, the whole solution (the joints' contact step);
+// on a symmetric positive definite matrix (a 3-D Laplacian plus a mass term,
+// the shape of K̄) and on a symmetric indefinite one (its block on half of the
+// unknowns negated, the shape of the coupled solid-water
+// matrix), the interface spread over the unknowns and, under MPI, the ranks.
+
+#include <archdam/time/condensed_factorization.h>
+#include <archdam/time/factorized_operator.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include "archdam_tests.h"
+
+#include <random>
+
+using namespace archdam;
+using namespace dealii;
+
+namespace
+{
+  /// A on an n^3 grid: 7-point Laplacian plus @p mass on the diagonal; with
+  /// @p indefinite the block of the second half of the unknowns with itself
+  /// is negated, which keeps A symmetric and makes it indefinite.
+  void
+  make_matrix(const unsigned int n, const double mass, const bool indefinite, archdam::SparseMatrix &A,
+              const IndexSet &owned)
+  {
+    const unsigned int     N = n * n * n;
+    DynamicSparsityPattern dsp(N, N);
+    const auto id = [n](unsigned int i, unsigned int j, unsigned int k) { return (k * n + j) * n + i; };
+    std::vector<std::tuple<unsigned int, unsigned int, double>> entries;
+    for (unsigned int k = 0; k < n; ++k)
+      for (unsigned int j = 0; j < n; ++j)
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int r = id(i, j, k);
+            entries.emplace_back(r, r, 6. + mass);
+            if (i + 1 < n)
+              entries.emplace_back(r, id(i + 1, j, k), -1.);
+            if (j + 1 < n)
+              entries.emplace_back(r, id(i, j + 1, k), -1.);
+            if (k + 1 < n)
+              entries.emplace_back(r, id(i, j, k + 1), -1.);
+          }
+    for (const auto &[r, c, v] : entries)
+      {
+        dsp.add(r, c);
+        dsp.add(c, r);
+      }
+    A.reinit(owned, owned, dsp, MPI_COMM_WORLD);
+    for (const auto &[r, c, v] : entries)
+      {
+        const double value = indefinite && r >= N / 2 && c >= N / 2 ? -v : v;
+        if (owned.is_element(r))
+          A.set(r, c, value);
+        if (r != c && owned.is_element(c))
+          A.set(c, r, value);
+      }
+    A.compress(VectorOperation::insert);
+  }
+
+  void
+  check(const std::string &name, const bool indefinite)
+  {
+    const unsigned int n = 12, N = n * n * n;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    IndexSet           owned(N);
+    owned.add_range(N * rank / n_ranks, N * (rank + 1) / n_ranks);
+    archdam::SparseMatrix A;
+    make_matrix(n, 0.5, indefinite, A, owned);
+
+    // The interface: every 17th unknown (spread over the grid and the ranks).
+    std::vector<types::global_dof_index> gamma;
+    for (unsigned int g = 3; g < N; g += 17)
+      gamma.push_back(g);
+    const unsigned int k = gamma.size();
+
+    time::FactorizedOperator     plain;
+    // MUMPS's LDL^T through PETSc for the indefinite case (Cholesky would fail).
+    plain.factorize(A, !indefinite);
+    time::CondensedFactorization condensed(A, !indefinite, gamma);
+
+    // S^{-1} against (A^{-1})_ΓΓ, column by column.
+    archdam::Vector e(owned, MPI_COMM_WORLD), column(owned, MPI_COMM_WORLD);
+    double worst_inverse = 0., largest = 0.;
+    for (unsigned int c = 0; c < k; c += 7)
+      {
+        e = 0.;
+        if (owned.is_element(gamma[c]))
+          e(gamma[c]) = 1.;
+        e.compress(VectorOperation::insert);
+        plain.solve(column, e);
+        dealii::Vector<double> s(k);
+        s[c] = 1.;
+        condensed.solve_interface(s);
+        for (unsigned int r = 0; r < k; ++r)
+          {
+            const double reference = Utilities::MPI::sum(
+              owned.is_element(gamma[r]) ? double(column(gamma[r])) : 0., MPI_COMM_WORLD);
+            largest       = std::max(largest, std::abs(reference));
+            worst_inverse = std::max(worst_inverse, std::abs(s[r] - reference));
+          }
+      }
+    testing::check_below(name + ": S^-1 against the interface block of A^-1, largest "
+                                "difference relative to its largest entry",
+                         worst_inverse / largest, 1e-10);
+
+    // One condensed solve with a load on the interface against A^{-1} (b - q).
+    std::mt19937                           random(7);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    archdam::Vector                        b(owned, MPI_COMM_WORLD), x(owned, MPI_COMM_WORLD),
+      reference(owned, MPI_COMM_WORLD);
+    std::vector<double> q(k);
+    for (auto &v : q)
+      v = uniform(random);
+    for (unsigned int g = 0; g < N; ++g)
+      {
+        const double v = uniform(random); // the same sequence on every rank
+        if (owned.is_element(g))
+          b(g) = v;
+      }
+    b.compress(VectorOperation::insert);
+    archdam::Vector b_minus_q(b);
+    for (unsigned int g = 0; g < k; ++g)
+      if (owned.is_element(gamma[g]))
+        b_minus_q(gamma[g]) -= q[g];
+    b_minus_q.compress(VectorOperation::add);
+    plain.solve(reference, b_minus_q);
+
+    for (unsigned int repeat = 0; repeat < 2; ++repeat) // the second reuses the first's set-up
+      {
+        std::vector<double> y;
+        condensed.condense(b, y);
+        dealii::Vector<double> x_gamma(k);
+        for (unsigned int g = 0; g < k; ++g)
+          x_gamma[g] = y[g] - q[g];
+        condensed.solve_interface(x_gamma);
+        condensed.expand(std::vector<double>(x_gamma.begin(), x_gamma.end()), x);
+        x -= reference;
+        testing::check_below(name + ": condense, interface solve, expand against A^-1 (b - q)," +
+                               (repeat == 0 ? " first" : " second") +
+                               " solve, largest difference relative to the solution's largest",
+                             x.linfty_norm() / reference.linfty_norm(), 1e-10);
+      }
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check("positive definite", false);
+  check("indefinite", true);
+}
