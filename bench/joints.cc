@@ -8,7 +8,13 @@
 // Cases (each a whole Simulation::run(), dynamic stage only, from rest, no
 // field output; El Centro in x scaled by 2 so that joints open and slide):
 // - glued: the joints tied (the monolithic dam), Kbar factorized once;
-// - mixed: frictional contact by the mixed method (numerics.md §3);
+// - mixed: frictional contact by the mixed method (numerics.md §3) with the
+//   predictor and corrector (two back-substitutions per step, C from
+//   multi-column solves);
+// - condensed: the mixed method condensed on the pairs (Kbar factorized with
+//   the pair DOFs last: one back-substitution per step, C from the Schur
+//   complement), compared with the predictor and corrector by the peak
+//   opening of every joint;
 // - neighbouring: the mixed method with the paper's sparse approximation of
 //   C (only pairs on the same or adjacent joints coupled; C is still built in
 //   full, so it saves no build time here), compared with the exact C by the
@@ -171,7 +177,8 @@ main(int argc, char **argv)
             << "), El Centro x 2; medians of " << rounds << " alternating rounds, "
             << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " MPI process(es)\n"
             << "Kbar factorization [s]: glued " << m("glued", "factorization") << ", mixed "
-            << m("mixed", "factorization") << "\n"
+            << m("mixed", "factorization") << ", condensed on the pairs (with the Schur "
+            << "complement) " << m("condensed", "factorization") << "\n"
             << "per step [s]: glued " << m("glued", "per step") << ", mixed "
             << m("mixed", "per step") << ", monolithic " << m("monolithic", "per step")
             << " (" << m("monolithic", "not converged") << " of " << size.monolithic_steps
