@@ -24,6 +24,7 @@
 #include <archdam/physics/solid/solid_operators.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <fstream>
 
@@ -32,30 +33,14 @@ using namespace archdam;
 
 namespace
 {
-  const std::string box = R"(
-subsection Mesh
-  subsection Box
-    set Length = 4
-    set Width = 6
-    set Height = 12
-    set Number of blocks = 2
-    set Rock depth = 0
-    set Cells in x = 2
-    set Cells in y = 2
-    set Cells in z = 4
-  end
-end
-)";
+  namespace case_text = testing::case_text;
 
   void
   conservation()
   {
     std::ostringstream   quiet;
-    const Parameters     p = parameters_from_string(box + R"(
-subsection Static loads
-  set Gravity = false
-end
-)");
+    const Parameters     p =
+      parameters_from_string(case_text::tall_box_on_fixed_base + case_text::no_gravity);
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.setup_model();
     const auto &M = sim.mass();
@@ -130,7 +115,7 @@ end
   base_motion(const double dt, const double beta1)
   {
     std::ostringstream prm;
-    prm << box << R"(
+    prm << case_text::tall_box_on_fixed_base << R"(
 subsection Damping
   set Mode = damping ratio
   set Damping ratio = 0.05
@@ -149,17 +134,8 @@ subsection Ground motion
     set Units = m/s^2
   end
 end
-subsection Monitors
-  set Points = crest: 2, 3, 12
-  set Quantities = displacement
-end
-subsection Output
-  set Directory = results_energy_balance_elastic
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
+)" << case_text::displacement_monitors("crest: 2, 3, 12")
+        << case_text::quiet_output("results_energy_balance_elastic", 0);
     std::ostringstream   quiet;
     const Parameters     p = parameters_from_string(prm.str());
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);

@@ -15,30 +15,13 @@
 #include <archdam/physics/solid/solid_operators.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 using namespace dealii;
 using namespace archdam;
 
 namespace
 {
-  const char *model = R"(
-subsection Mesh
-  subsection Box
-    set Length = 4
-    set Width = 6
-    set Height = 12
-    set Number of blocks = 2
-    set Rock depth = 0
-    set Cells in x = 2
-    set Cells in y = 2
-    set Cells in z = 4
-  end
-end
-subsection Static loads
-  set Gravity = false
-end
-)";
-
   /// E = 1/2 v^T M v + 1/2 u^T K u. M and K are condensed (constrained rows
   /// and columns replaced by a diagonal): with the constrained entries of u and
   /// v set to zero the products are those of the full matrices on the
@@ -64,7 +47,8 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ostringstream               quiet;
-  const Parameters                 p = parameters_from_string(model);
+  const Parameters                 p = parameters_from_string(
+    testing::case_text::tall_box_on_fixed_base + testing::case_text::no_gravity);
   analysis::Simulation             sim(p, MPI_COMM_WORLD, quiet);
   sim.setup_model();
   const auto &M = sim.mass();
