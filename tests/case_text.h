@@ -35,6 +35,14 @@ end
 )";
   }
 
+  /// Ground motion in x: the two-column record @p file in m/s^2.
+  inline std::string
+  two_column_record_x(const std::string &file)
+  {
+    return "\nsubsection Ground motion\n  subsection Component x\n    set File = " + file +
+           "\n    set Format = two-column\n    set Units = m/s^2\n  end\nend\n";
+  }
+
   /// The box dam of two blocks (x 0...10 m, y 0...20 m, z 0...20 m, 1 x 2 x 2
   /// cells), @p lines ("set ...") adding to its Box subsection, shaken in x by
   /// the two-column record "record.txt" in m/s^2.
@@ -51,16 +59,7 @@ subsection Mesh
     set Cells in x = 1
     set Cells in y = 2
     set Cells in z = 2
-)" + lines + R"(  end
-end
-subsection Ground motion
-  subsection Component x
-    set File = record.txt
-    set Format = two-column
-    set Units = m/s^2
-  end
-end
-)";
+)" + lines + "  end\nend\n" + two_column_record_x("record.txt");
   }
 
   /// The box dam of two blocks, 4 m x 6 m x 12 m on a fixed base, 2 x 2 x 4

@@ -125,16 +125,9 @@ end
 subsection Time integration
   set Time step = )"
         << dt << "\n  set End time = 0.6\n  set Beta1 = " << beta1
-        << "\n  set Beta2 = " << 0.25 * (beta1 + 0.5) * (beta1 + 0.5) << R"(
-end
-subsection Ground motion
-  subsection Component x
-    set File = energy_balance_elastic_motion.txt
-    set Format = two-column
-    set Units = m/s^2
-  end
-end
-)" << case_text::displacement_monitors("crest: 2, 3, 12")
+        << "\n  set Beta2 = " << 0.25 * (beta1 + 0.5) * (beta1 + 0.5) << "\nend\n"
+        << case_text::two_column_record_x("energy_balance_elastic_motion.txt")
+        << case_text::displacement_monitors("crest: 2, 3, 12")
         << case_text::quiet_output("results_energy_balance_elastic", 0);
     std::ostringstream   quiet;
     const Parameters     p = parameters_from_string(prm.str());

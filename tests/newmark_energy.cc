@@ -16,31 +16,10 @@
 
 #include "archdam_tests.h"
 #include "case_text.h"
+#include "foundation_tests.h"
 
 using namespace dealii;
 using namespace archdam;
-
-namespace
-{
-  /// E = 1/2 v^T M v + 1/2 u^T K u. M and K are condensed (constrained rows
-  /// and columns replaced by a diagonal): with the constrained entries of u and
-  /// v set to zero the products are those of the full matrices on the
-  /// constrained fields (u = C u_free: C^T M C), as the energy needs.
-  double
-  energy(const archdam::SparseMatrix &M, const archdam::SparseMatrix &K,
-         const AffineConstraints<double> &constraints, const time::NewmarkState &s,
-         archdam::Vector &tmp)
-  {
-    archdam::Vector free = s.v;
-    constraints.set_zero(free);
-    M.vmult(tmp, free);
-    const double kinetic = 0.5 * (tmp * free);
-    free = s.u;
-    constraints.set_zero(free);
-    K.vmult(tmp, free);
-    return kinetic + 0.5 * (tmp * free);
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -99,7 +78,7 @@ main(int argc, char **argv)
       s.u = u0;
       s.a = a0;
 
-      const double E0       = energy(M, K, sim.space().constraints, s, tmp);
+      const double E0       = testing::elastic_energy(M, K, sim.space().constraints, s);
       double       E        = E0;
       double       worst    = 0.; // largest violation of the identity, relative to E0
       bool         monotone = true;
@@ -109,14 +88,14 @@ main(int argc, char **argv)
           newmark.advance(zero, s);
           vbar += s.v;
           vbar *= 0.5;
-          sim.space().constraints.set_zero(vbar); // as in energy()
+          sim.space().constraints.set_zero(vbar); // as in elastic_energy()
           // dissipation dt vbar^T (alpha M + beta K) vbar
           M.vmult(tmp, vbar);
           double dissipated = c.alpha * (tmp * vbar);
           K.vmult(tmp, vbar);
           dissipated = dt * (dissipated + c.beta * (tmp * vbar));
 
-          const double E_next = energy(M, K, sim.space().constraints, s, tmp);
+          const double E_next = testing::elastic_energy(M, K, sim.space().constraints, s);
           monotone            = monotone && E_next < E;
           if (c.beta1 == 0.5)
             worst = std::max(worst, std::abs(E_next - E + dissipated) / E0);
