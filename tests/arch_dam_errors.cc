@@ -25,22 +25,12 @@ namespace
   void
   expect_error(const std::string &what, const std::function<void(geometry::ArchDamParameters &)> &change)
   {
-    geometry::ArchDamParameters p;
-    change(p);
-    Triangulation<3> tria;
-    try
-      {
-        geometry::generate_arch_dam(p, tria);
-        log() << "* " << what << "\n  accepted: NO (an InputError was expected)" << std::endl;
-      }
-    catch (const InputError &e)
-      {
-        log() << "* " << what << "\n  InputError: yes\n  " << e.what() << std::endl;
-      }
-    catch (const std::exception &e)
-      {
-        log() << "* " << what << "\n  another exception: NO\n  " << e.what() << std::endl;
-      }
+    testing::check_input_error(what, [&] {
+      geometry::ArchDamParameters p;
+      change(p);
+      Triangulation<3> tria;
+      geometry::generate_arch_dam(p, tria);
+    });
   }
 } // namespace
 

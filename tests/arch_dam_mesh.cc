@@ -64,6 +64,7 @@ using archdam::testing::log;
 using archdam::testing::bilinear_area;
 using archdam::testing::integrate;
 using archdam::testing::scaled_jacobian;
+using archdam::testing::yes;
 
 namespace
 {
@@ -76,11 +77,6 @@ namespace
     return Utilities::MPI::sum(v, MPI_COMM_WORLD);
   }
 
-  std::string
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
 } // namespace
 
 int

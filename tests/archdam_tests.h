@@ -4,15 +4,21 @@
 // file then records the verdicts, never raw numbers produced by the code alone.
 #pragma once
 
+#include <archdam/base/input_error.h>
+
+#include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <regex>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace archdam::testing
 {
@@ -25,6 +31,13 @@ namespace archdam::testing
       return std::cout;
     sink.str("");
     return sink;
+  }
+
+  /// The verdict printed for a check: "yes" or "NO".
+  inline std::string
+  yes(const bool ok)
+  {
+    return ok ? "yes" : "NO";
   }
 
   /**
@@ -52,6 +65,56 @@ namespace archdam::testing
     const bool ok = value < tol;
     log() << what << " below " << tol << ": " << (ok ? "yes" : "NO") << std::endl;
     return ok;
+  }
+
+  /// Run @p run, which must throw an InputError, and print @p what with the
+  /// verdict and the message.
+  inline void
+  check_input_error(const std::string &what, const std::function<void()> &run)
+  {
+    try
+      {
+        run();
+        log() << "* " << what << "\n  accepted: NO (an InputError was expected)" << std::endl;
+      }
+    catch (const InputError &e)
+      {
+        log() << "* " << what << "\n  InputError: yes\n  " << e.what() << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        log() << "* " << what << "\n  another exception: NO\n  " << e.what() << std::endl;
+      }
+  }
+
+  /// Print @p what and then the message of the InputError that @p run must
+  /// throw ("  InputError: ..."), or what happened instead.
+  inline void
+  expect_input_error(const std::string &what, const std::function<void()> &run)
+  {
+    log() << what << std::endl;
+    try
+      {
+        run();
+        log() << "  NO EXCEPTION" << std::endl;
+      }
+    catch (const InputError &e)
+      {
+        log() << "  InputError: " << e.what() << std::endl;
+      }
+    catch (const std::exception &e)
+      {
+        log() << "  WRONG EXCEPTION: " << e.what() << std::endl;
+      }
+  }
+
+  /// The index of the column @p name among @p names (a history's header).
+  inline std::size_t
+  column(const std::vector<std::string> &names, const std::string &name)
+  {
+    const std::size_t c = std::find(names.begin(), names.end(), name) - names.begin();
+    AssertThrow(c < names.size(), dealii::ExcMessage("column '" + name + "' missing"));
+    return c;
   }
 
   /// The first number stored under @p key in a summary.json (read on rank 0,

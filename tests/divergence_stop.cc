@@ -27,9 +27,8 @@
 // summary.json is valid JSON with the "stopped" entry (absent in 4);
 // solution.pvd and every file it names parse.
 
-#include <archdam/application/command_line.h>
-
-#include "archdam_tests.h"
+#include "case_text.h"
+#include "command_line_tests.h"
 #include "result_files.h"
 
 #include <deal.II/base/point.h>
@@ -39,23 +38,11 @@
 #include <regex>
 
 using archdam::testing::log;
+using archdam::testing::write_input;
+using archdam::testing::yes;
 
 namespace
 {
-  std::string
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
-
-  void
-  write(const std::string &name, const std::string &text)
-  {
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(name) << text;
-    MPI_Barrier(MPI_COMM_WORLD);
-  }
-
   /// A record sampled every 0.01 s to @p duration: @p amplitude sin(20 t)
   /// m/s^2, with @p bad at @p t_bad (t_bad < 0: none).
   std::string
@@ -80,36 +67,9 @@ namespace
   std::string
   case_text(const std::string &model)
   {
-    return R"(
-subsection Mesh
-  subsection Box
-    set Length = 10
-    set Width = 20
-    set Height = 20
-    set Number of blocks = 2
-    set Cells in x = 1
-    set Cells in y = 2
-    set Cells in z = 2
-  end
-end
-subsection Ground motion
-  subsection Component x
-    set File = record.txt
-    set Format = two-column
-    set Units = m/s^2
-  end
-end
-subsection Monitors
-  set Points = crest: 5, 10, 20
-  set Quantities = displacement
-end
-subsection Output
-  set Directory = results
-  set Field output interval = 2
-  set Progress = false
-  set Timer summary = false
-end
-)" + model;
+    using namespace archdam::testing::case_text;
+    return two_block_box_shaken_by_record_txt() + displacement_monitors("crest: 5, 10, 20") +
+           quiet_output("results", 2) + model;
   }
 
   const std::string fixed_base = R"(
@@ -176,8 +136,8 @@ end
       const Expected &e)
   {
     log() << "* " << what << std::endl;
-    write("record.txt", motion);
-    write("case.prm", case_text(model));
+    write_input("record.txt", motion);
+    write_input("case.prm", case_text(model));
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::filesystem::remove_all("results");
     MPI_Barrier(MPI_COMM_WORLD);

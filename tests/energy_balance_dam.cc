@@ -26,7 +26,7 @@
 
 #include <archdam/analysis/simulation.h>
 
-#include "arch_dam_water_case.h"
+#include "arch_dam_case.h"
 #include "archdam_tests.h"
 
 using namespace dealii;
@@ -37,7 +37,7 @@ namespace
   std::string
   model(const std::string &foundation)
   {
-    return testing::arch_dam_water_case(foundation, "results_energy_" + foundation);
+    return testing::arch_dam_case(foundation, "results_energy_" + foundation);
   }
 } // namespace
 

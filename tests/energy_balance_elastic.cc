@@ -24,6 +24,7 @@
 #include <archdam/physics/solid/solid_operators.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <fstream>
 
@@ -32,30 +33,14 @@ using namespace archdam;
 
 namespace
 {
-  const std::string box = R"(
-subsection Mesh
-  subsection Box
-    set Length = 4
-    set Width = 6
-    set Height = 12
-    set Number of blocks = 2
-    set Rock depth = 0
-    set Cells in x = 2
-    set Cells in y = 2
-    set Cells in z = 4
-  end
-end
-)";
+  namespace case_text = testing::case_text;
 
   void
   conservation()
   {
     std::ostringstream   quiet;
-    const Parameters     p = parameters_from_string(box + R"(
-subsection Static loads
-  set Gravity = false
-end
-)");
+    const Parameters     p =
+      parameters_from_string(case_text::tall_box_on_fixed_base + case_text::no_gravity);
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.setup_model();
     const auto &M = sim.mass();
@@ -130,7 +115,7 @@ end
   base_motion(const double dt, const double beta1)
   {
     std::ostringstream prm;
-    prm << box << R"(
+    prm << case_text::tall_box_on_fixed_base << R"(
 subsection Damping
   set Mode = damping ratio
   set Damping ratio = 0.05
@@ -140,26 +125,10 @@ end
 subsection Time integration
   set Time step = )"
         << dt << "\n  set End time = 0.6\n  set Beta1 = " << beta1
-        << "\n  set Beta2 = " << 0.25 * (beta1 + 0.5) * (beta1 + 0.5) << R"(
-end
-subsection Ground motion
-  subsection Component x
-    set File = energy_balance_elastic_motion.txt
-    set Format = two-column
-    set Units = m/s^2
-  end
-end
-subsection Monitors
-  set Points = crest: 2, 3, 12
-  set Quantities = displacement
-end
-subsection Output
-  set Directory = results_energy_balance_elastic
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
+        << "\n  set Beta2 = " << 0.25 * (beta1 + 0.5) * (beta1 + 0.5) << "\nend\n"
+        << case_text::two_column_record_x("energy_balance_elastic_motion.txt")
+        << case_text::displacement_monitors("crest: 2, 3, 12")
+        << case_text::quiet_output("results_energy_balance_elastic", 0);
     std::ostringstream   quiet;
     const Parameters     p = parameters_from_string(prm.str());
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);

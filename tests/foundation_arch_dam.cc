@@ -18,6 +18,7 @@
 
 #include <archdam/analysis/simulation.h>
 
+#include "arch_dam_case.h"
 #include "archdam_tests.h"
 
 using namespace dealii;
@@ -25,82 +26,16 @@ using namespace archdam;
 
 namespace
 {
-  std::string
-  model(const std::string &foundation)
-  {
-    return R"(
-subsection Mesh
-  set Source = arch dam
-  subsection Arch dam
-    set Number of blocks = 4
-    set Cells across each block = 1
-    set Cells through thickness = 1
-    set Cells over height = 3
-    set Rock cell size = 120
-    set Water level = 0
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Foundation
-  set Model = )" + foundation + R"(
-end
-subsection Damping
-  set Mode = damping ratio
-  set Damping ratio = 0.05
-  set First frequency = 2
-  set Second frequency = 15
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 2
-end
-subsection Ground motion
-  subsection Component x
-    set File = )" SOURCE_DIR R"(/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2
-  end
-end
-subsection Monitors
-  set Points = crest: 5, 0, 234; base: 24, 0, 1
-  set Quantities = displacement
-end
-subsection Output
-  set Directory = results_)" + foundation + R"(
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
-  }
-
-  struct Response
-  {
-    double static_crest, peak_relative;
-    unsigned int factorizations;
-  };
-
-  Response
+  testing::CrownResponse
   run(const std::string &foundation)
   {
     std::ostringstream   quiet;
-    const Parameters     p = parameters_from_string(model(foundation));
+    const Parameters     p = parameters_from_string(
+      testing::arch_dam_case(foundation, "results_" + foundation,
+                             testing::Reservoir::empty_and_glued_joints, 2));
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.run();
-    const auto &names = sim.histories().columns();
-    const auto  col   = [&](const std::string &n) {
-      return std::find(names.begin(), names.end(), n) - names.begin();
-    };
-    const auto crest = col("crest.ux [m]"), base = col("base.ux [m]");
-    AssertThrow(crest < long(names.size()) && base < long(names.size()),
-                ExcMessage("monitor columns missing"));
-    Response r{sim.histories().rows().front()[crest], 0., 0};
-    for (const auto &row : sim.histories().rows())
-      r.peak_relative = std::max(r.peak_relative, std::abs(row[crest] - row[base]));
-    const auto calls = sim.timers().get_summary_data(TimerOutput::n_calls);
-    r.factorizations = calls.count("dynamic: factorization") ?
-                         calls.at("dynamic: factorization") : 0;
-    return r;
+    return testing::crown_response(sim);
   }
 } // namespace
 
@@ -108,7 +43,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const Response massless = run("massless"), massed = run("massed");
+  const auto massless = run("massless"), massed = run("massed");
   auto          &log      = testing::log();
   log << "crown crest, stream direction    massless      massed (MTF)" << std::endl
       << std::setprecision(3) << std::scientific

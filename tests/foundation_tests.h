@@ -1,7 +1,7 @@
 // Helpers of the foundation radiation tests (verification.md, "Foundation
 // radiation"): rock boxes and columns, lateral ties that make a column
-// one-dimensional, the elastic energy, and smooth pulses with their exact
-// derivatives.
+// one-dimensional, the elastic energy (also newmark_energy's), and smooth
+// pulses with their exact derivatives.
 #pragma once
 
 #include <archdam/fe/fe_space.h>
@@ -124,8 +124,10 @@ namespace archdam::testing
       }
   }
 
-  /// E = 1/2 v^T M v + 1/2 u^T K u over the free DOFs (constrained entries
-  /// zeroed, M and K being condensed; newmark_energy.cc explains it).
+  /// E = 1/2 v^T M v + 1/2 u^T K u. M and K are condensed (constrained rows
+  /// and columns replaced by a diagonal): with the constrained entries of u
+  /// and v set to zero the products are those of the full matrices on the
+  /// constrained fields (u = C u_free: C^T M C), as the energy needs.
   inline double
   elastic_energy(const SparseMatrix &M, const SparseMatrix &K,
                  const dealii::AffineConstraints<double> &constraints, const time::NewmarkState &s)

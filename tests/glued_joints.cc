@@ -20,6 +20,7 @@
 #include <archdam/geometry/splitter.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 using namespace dealii;
 using namespace archdam;
@@ -51,10 +52,10 @@ subsection Time integration
 end
 subsection Ground motion
   subsection Component x
-    set File = )" SOURCE_DIR R"(/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2
+    set File = )" + testing::case_text::el_centro_file("180") + R"(
   end
   subsection Component y
-    set File = )" SOURCE_DIR R"(/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC270.AT2
+    set File = )" + testing::case_text::el_centro_file("270") + R"(
     set Scale factor = 20
   end
 end
@@ -63,14 +64,7 @@ subsection Monitors
   set Points = joint_crest: 4, 12, 16; block_crest: 8, 3, 16; joint_heel: 0, 6, 0
   set Quantities = displacement, acceleration, principal stress
 end
-subsection Output
-  set Directory = results_)" +
-           std::to_string(n_blocks) + R"(
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
+)" + testing::case_text::quiet_output("results_" + std::to_string(n_blocks), 0);
   }
 
   Tensor<1, dim>

@@ -41,15 +41,10 @@ using namespace archdam;
 using archdam::testing::check_relative;
 using archdam::testing::log;
 namespace ex = archdam::testing::gmsh_example;
+using archdam::testing::yes;
 
 namespace
 {
-  std::string
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
-
   double
   sum(const double v)
   {

@@ -57,6 +57,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <cmath>
 #include <map>
@@ -123,18 +124,13 @@ namespace
         << "\n    set Number of blocks = 1\n    set Cells in x = 2\n    set Cells in y = 2\n"
         << "    set Cells in z = " << n_z << "\n    set Rock depth = 0\n  end\nend\n"
         << "subsection Finite element\n  set Degree = " << degree << "\nend\n"
-        << "subsection Materials\n  subsection Concrete\n"
-        << "    set Young's modulus = " << E << "\n    set Poisson's ratio = 0\n"
-        << "    set Density = " << rho << "\n  end\nend\n"
-        << "subsection Static loads\n  set Gravity = true\n"
-        << "  set Gravitational acceleration = " << g << "\nend\n"
+        << archdam::testing::case_text::concrete_under_gravity(E, rho, g)
         << "subsection Analysis\n  set Case name = gravity_column\n"
         << "  set Stages = static\nend\n"
         << "subsection Monitors\n  set Points = " << points.str() << "\n"
         << "  set Quantities = displacement, principal stress\nend\n"
-        << "subsection Output\n  set Directory = gravity_column_results_q" << degree << "\n"
-        << "  set Field output interval = 0\n  set Progress = false\n"
-        << "  set Timer summary = false\nend\n";
+        << archdam::testing::case_text::quiet_output(
+             "gravity_column_results_q" + std::to_string(degree), 0);
     const Parameters p = parameters_from_string(prm.str());
 
     std::ostringstream        screen; // the library's progress lines are not compared

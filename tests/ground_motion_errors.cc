@@ -14,7 +14,10 @@
 #include <iostream>
 #include <string>
 
+#include "archdam_tests.h"
+
 using namespace archdam::loads;
+using archdam::testing::expect_input_error;
 
 namespace
 {
@@ -32,25 +35,6 @@ namespace
            "Test event, 1/1/2000, Test station, 90\n"
            "ACCELERATION TIME SERIES IN UNITS OF G\n" +
            line4 + "\n";
-  }
-
-  void
-  expect_input_error(const std::string &what, const std::function<void()> &f)
-  {
-    std::cout << what << std::endl;
-    try
-      {
-        f();
-        std::cout << "  NO EXCEPTION" << std::endl;
-      }
-    catch (const archdam::InputError &e)
-      {
-        std::cout << "  InputError: " << e.what() << std::endl;
-      }
-    catch (const std::exception &e)
-      {
-        std::cout << "  WRONG EXCEPTION: " << e.what() << std::endl;
-      }
   }
 
   /// GroundMotion with one x component.

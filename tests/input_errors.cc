@@ -5,72 +5,33 @@
 // value. Each case is a valid short case (a box dam of two blocks, one
 // contraction joint) with one thing made wrong, mostly by --set.
 
-#include <archdam/application/command_line.h>
-
-#include "archdam_tests.h"
+#include "case_text.h"
+#include "command_line_tests.h"
 
 #include <filesystem>
-#include <fstream>
+
+using archdam::testing::run_archdam;
+using archdam::testing::write_input;
 
 namespace
 {
-  void
-  write(const std::string &name, const std::string &text)
-  {
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::ofstream(name) << text;
-    MPI_Barrier(MPI_COMM_WORLD);
-  }
-
-  void
-  run(const std::string &what, std::vector<std::string> args)
-  {
-    args.insert(args.begin(), "archdam");
-    std::vector<const char *> argv;
-    for (const auto &a : args)
-      argv.push_back(a.c_str());
-    std::ostringstream out, err;
-    const int code = archdam::run_command_line(argv.size(), argv.data(), out, err);
-    archdam::testing::log() << "* " << what << "\n  exit code " << code << "\n  "
-                            << err.str() << std::endl;
-  }
-
   /// The good case with one more parameter.
   void
   run_set(const std::string &what, const std::string &assignment)
   {
-    run(what, {"good.prm", "--set", assignment});
+    run_archdam(what, {"good.prm", "--set", assignment});
   }
 
   /// The good case with frictional joints and one more parameter.
   void
   run_joints(const std::string &what, const std::string &assignment)
   {
-    run(what, {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
-               assignment});
+    run_archdam(what, {"good.prm", "--set", "Contraction joints/Model=frictional contact",
+                       "--set", assignment});
   }
 
-  const char *good_case = R"(
-subsection Mesh
-  subsection Box
-    set Number of blocks = 2
-    set Cells in y = 2
-    set Rock depth = 0
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Time integration
-  set End time = 0.02
-end
-subsection Output
-  set Directory = results
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
+  const std::string good_case = archdam::testing::case_text::short_box_case(
+    "    set Number of blocks = 2\n    set Cells in y = 2\n");
 
   // A PEER record whose one sample, 1e308 g, is a number but not in m/s^2.
   const char *huge_at2 = "PEER NGA STRONG MOTION DATABASE RECORD\n"
@@ -95,12 +56,12 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
-  write("good.prm", good_case);
-  write("huge.AT2", huge_at2);
-  write("rock_only.msh", gmsh_hexahedron(1));
-  write("tetrahedron.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
-                           "2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
-                           "1 4 2 10 1 1 2 3 4\n$EndElements\n");
+  write_input("good.prm", good_case);
+  write_input("huge.AT2", huge_at2);
+  write_input("rock_only.msh", gmsh_hexahedron(1));
+  write_input("tetrahedron.msh", "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n"
+                                 "2 1 0 0\n3 0 1 0\n4 0 0 1\n$EndNodes\n$Elements\n1\n"
+                                 "1 4 2 10 1 1 2 3 4\n$EndElements\n");
   if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
       std::filesystem::create_directories("blocked_histories/histories.csv");
@@ -109,16 +70,16 @@ main(int argc, char **argv)
   MPI_Barrier(MPI_COMM_WORLD);
 
   // Command line
-  run("two case files", {"good.prm", "good.prm"});
-  write("includes_missing.prm", "include no_such_case.prm\n");
-  run("a case file that includes a file that does not exist", {"includes_missing.prm"});
-  run("--print-parameters with two formats", {"--print-parameters", "json", "xml"});
-  run("--print-parameters with an unknown format", {"--print-parameters", "yaml"});
+  run_archdam("two case files", {"good.prm", "good.prm"});
+  write_input("includes_missing.prm", "include no_such_case.prm\n");
+  run_archdam("a case file that includes a file that does not exist", {"includes_missing.prm"});
+  run_archdam("--print-parameters with two formats", {"--print-parameters", "json", "xml"});
+  run_archdam("--print-parameters with an unknown format", {"--print-parameters", "yaml"});
 
   // Values out of range, inconsistent values
   run_set("a time step of 0", "Time integration/Time step=0");
   run_set("an end time shorter than one time step", "Time integration/End time=0.004");
-  run("damping frequencies in the wrong order",
+  run_archdam("damping frequencies in the wrong order",
       {"good.prm", "--set", "Damping/Mode=damping ratio", "--set",
        "Damping/First frequency=20", "--set", "Damping/Second frequency=10"});
   run_set("no stage to run", "Analysis/Stages=");
@@ -130,14 +91,14 @@ main(int argc, char **argv)
   run_set("box cells across the dam not a multiple of the blocks", "Mesh/Box/Cells in y=3");
   run_set("Mesh/Source = gmsh without a file", "Mesh/Source=gmsh");
 
-  run("a Gmsh mesh without dam cells", {"good.prm", "--set", "Mesh/Source=gmsh", "--set",
-                                        "Mesh/Gmsh/File=rock_only.msh"});
-  run("a Gmsh mesh of tetrahedra", {"good.prm", "--set", "Mesh/Source=gmsh", "--set",
-                                    "Mesh/Gmsh/File=tetrahedron.msh"});
+  run_archdam("a Gmsh mesh without dam cells",
+              {"good.prm", "--set", "Mesh/Source=gmsh", "--set", "Mesh/Gmsh/File=rock_only.msh"});
+  run_archdam("a Gmsh mesh of tetrahedra",
+              {"good.prm", "--set", "Mesh/Source=gmsh", "--set", "Mesh/Gmsh/File=tetrahedron.msh"});
 
   // Points outside their region
   const std::string blocks = "Mesh/Gmsh/File=" SOURCE_DIR "/../prm/gmsh_blocks_v4.msh";
-  run("a pressure point outside the water",
+  run_archdam("a pressure point outside the water",
       {"good.prm", "--set", "Mesh/Source=gmsh", "--set", blocks, "--set",
        "Reservoir/Model=compressible", "--set", "Reservoir/Pressure points=dry: 5, 5, 5"});
 
@@ -176,11 +137,11 @@ main(int argc, char **argv)
              "Contraction joints/Monitor points=crest: 5, 10");
   run_joints("a joint monitor coordinate that is not a number",
              "Contraction joints/Monitor points=crest: 5, ten, 20");
-  run("joint monitor points in a dam of one block (no joints)",
+  run_archdam("joint monitor points in a dam of one block (no joints)",
       {"good.prm", "--set", "Mesh/Box/Number of blocks=1", "--set",
        "Contraction joints/Model=frictional contact", "--set",
        "Contraction joints/Monitor points=crest: 5, 10, 20"});
-  run("a monolithic contact solver with a penalty too large to solve",
+  run_archdam("a monolithic contact solver with a penalty too large to solve",
       {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
        "Contraction joints/Solver=monolithic", "--set", "Contraction joints/Penalty factor=1e300"});
 }

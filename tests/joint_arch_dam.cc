@@ -27,6 +27,7 @@
 #include <archdam/base/input_error.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <filesystem>
 #include <fstream>
@@ -41,45 +42,13 @@ namespace
   model(const std::string &joints, const std::string &directory,
         const std::string &stages = "static, dynamic")
   {
-    return R"(
-subsection Analysis
-  set Stages = )" + stages + R"(
-end
-subsection Mesh
-  set Source = arch dam
-  subsection Arch dam
-    set Cells across each block = 1
-    set Cells through thickness = 1
-    set Cells over height = 4
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Contraction joints
-)" + joints + R"(
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 0.5
-end
-subsection Ground motion
-  subsection Component x
-    set File = )" SOURCE_DIR R"(/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2
-    set Scale factor = 2
-  end
-end
-subsection Monitors
-  set Points = crest: 5, 0, 234
-  set Quantities = displacement
-end
-subsection Output
-  set Directory = )" + directory + R"(
-  set Field output interval = 10
-  set Progress = false
-  set Timer summary = false
-end
-)";
+    return "\nsubsection Analysis\n  set Stages = " + stages + "\nend\n" +
+           testing::case_text::coarse_arch_dam_mesh(4) + testing::case_text::linear_elements +
+           "\nsubsection Contraction joints\n" + joints + "\nend\n" +
+           testing::case_text::time_integration(0.01, 0.5) +
+           testing::case_text::el_centro_x("    set Scale factor = 2\n") +
+           testing::case_text::displacement_monitors("crest: 5, 0, 234") +
+           testing::case_text::quiet_output(directory, 10);
   }
 
   /// Largest violation of the law over all pairs (test's own reading of
@@ -114,9 +83,7 @@ end
   std::vector<double>
   crest_history(const analysis::Simulation &sim)
   {
-    const auto &names = sim.histories().columns();
-    const auto  col   = std::find(names.begin(), names.end(), "crest.ux [m]") - names.begin();
-    AssertThrow(col < long(names.size()), ExcMessage("crest column missing"));
+    const auto          col = testing::column(sim.histories().columns(), "crest.ux [m]");
     std::vector<double> h;
     for (const auto &row : sim.histories().rows())
       h.push_back(row[col]);

@@ -22,6 +22,9 @@
 
 #include <deal.II/base/hdf5.h>
 
+#include "archdam_tests.h"
+#include "case_text.h"
+#include "child_process.h"
 #include "result_files.h"
 
 #include <csignal>
@@ -29,55 +32,21 @@
 #include <iostream>
 #include <random>
 #include <sys/wait.h>
-#include <thread>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
+using archdam::testing::count_lines;
+using archdam::testing::read_file;
+using archdam::testing::yes;
 
 namespace
 {
-  std::string
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
-
-  std::string
-  read(const fs::path &file)
-  {
-    std::ifstream in(file, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  }
-
   const unsigned int n_steps = 2000, field_interval = 25;
 
-  const char *case_text = R"(
-subsection Mesh
-  subsection Box
-    set Length = 10
-    set Width = 20
-    set Height = 20
-    set Number of blocks = 2
-    set Cells in x = 1
-    set Cells in y = 2
-    set Cells in z = 2
-    set Rock depth = 0
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Time integration
-  set Time step = 0.001
-  set End time = 2
-end
-subsection Ground motion
-  subsection Component x
-    set File = record.txt
-    set Format = two-column
-    set Units = m/s^2
-  end
-end
+  namespace case_text = archdam::testing::case_text;
+  const std::string case_file = case_text::two_block_box_shaken_by_record_txt(
+                                  "    set Rock depth = 0\n") +
+                                case_text::linear_elements +
+                                case_text::time_integration(0.001, 2) + R"(
 subsection Monitors
   set Points = crest: 5, 10, 20
   set Quantities = displacement, principal stress
@@ -95,26 +64,9 @@ end
   pid_t
   start(const std::string &directory)
   {
-    const pid_t pid = fork();
-    if (pid == 0)
-      {
-        const std::string log = directory + ".log";
-        std::freopen(log.c_str(), "w", stdout);
-        // one open file for both: with two, a later write to stdout would
-        // overwrite what stderr appended (the error message)
-        dup2(fileno(stdout), fileno(stderr));
-        const std::string set = "Output/Directory=" + directory;
-        execl(ARCHDAM_EXECUTABLE, "archdam", "case.prm", "--set", set.c_str(), nullptr);
-        std::_Exit(127);
-      }
-    return pid;
-  }
-
-  unsigned int
-  count_lines(const fs::path &file)
-  {
-    const auto text = read(file);
-    return std::count(text.begin(), text.end(), '\n');
+    return archdam::testing::start_child(
+      {ARCHDAM_EXECUTABLE, "case.prm", "--set", "Output/Directory=" + directory},
+      directory + ".log");
   }
 
   /// Every result file in @p directory parses; "" or the first problem.
@@ -172,7 +124,7 @@ end
   pvd_entries(const fs::path &pvd)
   {
     std::vector<std::string> entries;
-    std::stringstream        s(read(pvd));
+    std::stringstream        s(read_file(pvd));
     for (std::string line; std::getline(s, line);)
       if (line.find("<DataSet") != std::string::npos)
         entries.push_back(line);
@@ -183,7 +135,7 @@ end
 int
 main()
 {
-  std::ofstream("case.prm") << case_text;
+  std::ofstream("case.prm") << case_file;
   {
     std::ofstream r("record.txt");
     for (unsigned int k = 0; k <= 2 * n_steps / 10; ++k)
@@ -194,7 +146,7 @@ main()
   fs::remove_all("reference");
   int status = 0;
   waitpid(start("reference"), &status, 0);
-  const auto reference_csv = read("reference/histories.csv");
+  const auto reference_csv = read_file("reference/histories.csv");
   const auto reference_pvd = pvd_entries("reference/solution.pvd");
   std::cout << "uninterrupted run: exit code " << WEXITSTATUS(status) << ", "
             << count_lines("reference/histories.csv") - 1 << " history rows (expected "
@@ -206,7 +158,7 @@ main()
   fs::create_directories("cut");
   std::ofstream("cut/histories.csv")
     << reference_csv.substr(0, reference_csv.find('\n', reference_csv.size() / 2) + 5);
-  const auto reference_pvd_text = read("reference/solution.pvd");
+  const auto reference_pvd_text = read_file("reference/solution.pvd");
   std::ofstream("cut/solution.pvd") << reference_pvd_text.substr(0, reference_pvd_text.size() / 2);
   unsigned int n_cut = 0;
   std::cout << "a history cut inside a row is rejected: "
@@ -223,16 +175,12 @@ main()
       const std::string  directory = "killed_" + std::to_string(k);
       fs::remove_all(directory);
       const pid_t pid = start(directory);
-      // Wait until the histories hold `target` rows (header + rows lines).
-      unsigned int seen = 0;
-      while (seen < target + 1)
-        {
-          std::this_thread::sleep_for(std::chrono::microseconds(200));
-          if (fs::exists(directory + "/histories.csv"))
-            seen = count_lines(directory + "/histories.csv");
-          if (waitpid(pid, &status, WNOHANG) == pid)
-            break; // ended before the kill: reported below
-        }
+      // Wait until the histories hold `target` rows (header + rows lines); a
+      // run that ends before the kill is reported below.
+      const auto watched =
+        archdam::testing::watch_lines(pid, directory + "/histories.csv", target + 1);
+      const unsigned int seen = watched.lines;
+      status                  = watched.status;
       kill(pid, SIGKILL);
       waitpid(pid, &status, 0);
       std::cout << "* killed after at least " << target << " history rows: "
@@ -243,7 +191,7 @@ main()
       std::cout << "  every result file left parses: " << yes(problem.empty()) << problem
                 << std::endl;
 
-      const auto csv = read(directory + "/histories.csv");
+      const auto csv = read_file(directory + "/histories.csv");
       std::cout << "  histories.csv is a prefix of the uninterrupted run's: "
                 << yes(reference_csv.compare(0, csv.size(), csv) == 0)
                 << "\n  with at least the rows seen before the kill: "

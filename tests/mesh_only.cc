@@ -29,15 +29,10 @@
 
 using archdam::testing::log;
 namespace ex = archdam::testing::gmsh_example;
+using archdam::testing::yes;
 
 namespace
 {
-  std::string
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
-
   std::string
   read(const std::string &name)
   {

@@ -31,15 +31,10 @@ using namespace archdam;
 using archdam::testing::check_relative;
 using archdam::testing::log;
 namespace ex = archdam::testing::gmsh_example;
+using archdam::testing::yes;
 
 namespace
 {
-  std::string
-  yes(const bool b)
-  {
-    return b ? "yes" : "NO";
-  }
-
   unsigned long long
   nodes(const unsigned int p, const unsigned int n1, const unsigned int n2, const unsigned int n3)
   {

@@ -57,6 +57,7 @@
 #include <deal.II/base/mpi.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,6 +67,8 @@
 #include <vector>
 
 using archdam::testing::log;
+namespace case_text = archdam::testing::case_text;
+using archdam::testing::yes;
 
 namespace
 {
@@ -90,9 +93,7 @@ namespace
         << "  set Stages = modal\nend\n"
         << "subsection Modal analysis\n  set Number of modes = 2\n"
         << "  set Write mode shapes = false\nend\n"
-        << "subsection Output\n  set Directory = results_modal_arch_dam\n"
-        << "  set Field output interval = 0\n  set Progress = false\n"
-        << "  set Timer summary = false\nend\n";
+        << case_text::quiet_output("results_modal_arch_dam", 0);
     const archdam::Parameters     p = archdam::parameters_from_string(prm.str());
     std::ostringstream            screen;
     archdam::analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
@@ -104,28 +105,11 @@ namespace
     return f;
   }
 
-  std::string
-  yes(const bool ok)
-  {
-    return ok ? "yes" : "NO";
-  }
-
   void
   coupled_against_harmonic_response()
   {
-    const std::string prm = R"(
-subsection Mesh
-  set Source = gmsh
-  subsection Gmsh
-    set File = )" SOURCE_DIR R"(/../prm/gmsh_blocks_v4.msh
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Reservoir
-  set Model = compressible
-end
+    const std::string prm = case_text::gmsh_example_mesh() + case_text::linear_elements +
+                            case_text::compressible_reservoir() + R"(
 subsection Analysis
   set Case name = modal_gmsh_water
   set Stages = modal
@@ -134,13 +118,7 @@ subsection Modal analysis
   set Number of modes = 4
   set Write mode shapes = false
 end
-subsection Output
-  set Directory = results_modal_gmsh_water
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)";
+)" + case_text::quiet_output("results_modal_gmsh_water", 0);
     namespace reservoir = archdam::physics::reservoir;
     const archdam::Parameters     p = archdam::parameters_from_string(prm);
     std::ostringstream            screen;

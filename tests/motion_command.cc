@@ -26,6 +26,7 @@
 #include <sstream>
 
 #include "archdam_tests.h"
+#include "command_line_tests.h"
 
 using namespace archdam::loads;
 using archdam::testing::check_below;
@@ -40,16 +41,13 @@ namespace
   int
   run(const std::string &what, std::vector<std::string> args, const bool show = true)
   {
-    args.insert(args.begin(), "archdam-motion");
-    std::vector<const char *> argv;
-    for (const auto &a : args)
-      argv.push_back(a.c_str());
-    std::ostringstream out, err;
-    const int          code = run_motion_command(argv.size(), argv.data(), out, err);
+    std::string err;
+    const int   code = archdam::testing::run_in_process(run_motion_command, "archdam-motion",
+                                                      std::move(args), err);
     if (show)
-      log() << "* " << what << "\n  exit code " << code << "\n  " << err.str() << std::endl;
+      log() << "* " << what << "\n  exit code " << code << "\n  " << err << std::endl;
     else
-      log() << "* " << what << ": exit code " << code << (code == 0 ? "" : "\n  " + err.str())
+      log() << "* " << what << ": exit code " << code << (code == 0 ? "" : "\n  " + err)
             << std::endl;
     return code;
   }

@@ -10,31 +10,12 @@
 #include <archdam/loads/design_spectrum.h>
 #include <archdam/loads/record_io.h>
 
-#include <functional>
-
 #include "archdam_tests.h"
 
 using namespace archdam::loads;
 using archdam::testing::check_relative;
 using archdam::testing::log;
-
-namespace
-{
-  void
-  expect_error(const std::string &what, const std::function<void()> &f)
-  {
-    log() << what << std::endl;
-    try
-      {
-        f();
-        log() << "  NO EXCEPTION" << std::endl;
-      }
-    catch (const archdam::InputError &e)
-      {
-        log() << "  InputError: " << e.what() << std::endl;
-      }
-  }
-} // namespace
+using archdam::testing::expect_input_error;
 
 int
 main(int argc, char **argv)
@@ -96,24 +77,24 @@ main(int argc, char **argv)
   log() << "description: " << table.description() << std::endl;
 
   log() << "\nMalformed input" << std::endl;
-  expect_error("T_g below the end of the rising branch",
+  expect_input_error("T_g below the end of the rising branch",
                [&] { TargetSpectrum::nb35047(0.3 * g, 0.05, 2.5); });
-  expect_error("PGA zero", [&] { TargetSpectrum::nb35047(0., 0.4, 2.5); });
-  expect_error("beta_max below 1", [&] { TargetSpectrum::nb35047(0.3 * g, 0.4, 0.8); });
-  expect_error("table entry without a colon",
+  expect_input_error("PGA zero", [&] { TargetSpectrum::nb35047(0., 0.4, 2.5); });
+  expect_input_error("beta_max below 1", [&] { TargetSpectrum::nb35047(0.3 * g, 0.4, 0.8); });
+  expect_input_error("table entry without a colon",
                [&] { parse_spectrum_table("0: 1; 0.1 2.5", "Spectrum table: "); });
-  expect_error("table entry with text",
+  expect_input_error("table entry with text",
                [&] { parse_spectrum_table("0: 1; 0.1: high", "Spectrum table: "); });
-  expect_error("table with one point", [&] {
+  expect_input_error("table with one point", [&] {
     TargetSpectrum::table(g, parse_spectrum_table("0: 1", ""));
   });
-  expect_error("table periods not increasing", [&] {
+  expect_input_error("table periods not increasing", [&] {
     TargetSpectrum::table(g, parse_spectrum_table("0: 1; 0.5: 2; 0.5: 2.2", ""));
   });
-  expect_error("table with a negative period", [&] {
+  expect_input_error("table with a negative period", [&] {
     TargetSpectrum::table(g, parse_spectrum_table("-0.1: 1; 0.5: 2", ""));
   });
-  expect_error("table with beta = 0", [&] {
+  expect_input_error("table with beta = 0", [&] {
     TargetSpectrum::table(g, parse_spectrum_table("0: 1; 0.5: 0", ""));
   });
 }

@@ -29,24 +29,10 @@ using namespace archdam::loads;
 using archdam::testing::check_below;
 using archdam::testing::check_relative;
 using archdam::testing::log;
+using archdam::testing::expect_input_error;
 
 namespace
 {
-  void
-  expect_error(const std::string &what, const std::function<void()> &f)
-  {
-    log() << what << std::endl;
-    try
-      {
-        f();
-        log() << "  NO EXCEPTION" << std::endl;
-      }
-    catch (const archdam::InputError &e)
-      {
-        log() << "  InputError: " << e.what() << std::endl;
-      }
-  }
-
   /// A record of @p f at t_k = k dt, k = 0 ... n.
   AccelerationRecord
   sampled(const std::function<double(double)> &f, const double dt, const unsigned int n)
@@ -199,45 +185,45 @@ namespace
     irregular.times[5] += 0.003;
     ProcessingParameters p;
     const std::string    context = "Ground motion, Component x, file 'a.AT2': processing: ";
-    expect_error("window ends after the record", [&] {
+    expect_input_error("window ends after the record", [&] {
       p.end_time = 12;
       process(r, p, context);
     });
-    expect_error("window ends before it starts", [&] {
+    expect_input_error("window ends before it starts", [&] {
       p.start_time = 5, p.end_time = 4;
       process(r, p, context);
     });
-    expect_error("taper longer than half the window", [&] {
+    expect_input_error("taper longer than half the window", [&] {
       p            = ProcessingParameters();
       p.start_time = 1, p.end_time = 3, p.taper = 1.5;
       process(r, p, context);
     });
-    expect_error("filter on an irregular record", [&] {
+    expect_input_error("filter on an irregular record", [&] {
       p           = ProcessingParameters();
       p.high_pass = 0.1;
       process(irregular, p, context);
     });
-    expect_error("low-pass corner above the Nyquist frequency", [&] {
+    expect_input_error("low-pass corner above the Nyquist frequency", [&] {
       p          = ProcessingParameters();
       p.low_pass = 60;
       process(r, p, context);
     });
-    expect_error("high-pass corner above the low-pass corner", [&] {
+    expect_input_error("high-pass corner above the low-pass corner", [&] {
       p           = ProcessingParameters();
       p.high_pass = 5, p.low_pass = 2;
       process(r, p, context);
     });
-    expect_error("resampling step longer than the record", [&] {
+    expect_input_error("resampling step longer than the record", [&] {
       p           = ProcessingParameters();
       p.time_step = 20;
       process(r, p, context);
     });
-    expect_error("target PGA for a record of zeros", [&] {
+    expect_input_error("target PGA for a record of zeros", [&] {
       p            = ProcessingParameters();
       p.target_pga = 0.3;
       process(sampled([](double) { return 0.; }, 0.01, 10), p, context);
     });
-    expect_error("baseline polynomial of degree 2", [] { baseline_correction(
+    expect_input_error("baseline polynomial of degree 2", [] { baseline_correction(
       sampled([](double t) { return t; }, 0.01, 100), 2); });
   }
 } // namespace

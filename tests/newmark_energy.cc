@@ -15,56 +15,19 @@
 #include <archdam/physics/solid/solid_operators.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
+#include "foundation_tests.h"
 
 using namespace dealii;
 using namespace archdam;
-
-namespace
-{
-  const char *model = R"(
-subsection Mesh
-  subsection Box
-    set Length = 4
-    set Width = 6
-    set Height = 12
-    set Number of blocks = 2
-    set Rock depth = 0
-    set Cells in x = 2
-    set Cells in y = 2
-    set Cells in z = 4
-  end
-end
-subsection Static loads
-  set Gravity = false
-end
-)";
-
-  /// E = 1/2 v^T M v + 1/2 u^T K u. M and K are condensed (constrained rows
-  /// and columns replaced by a diagonal): with the constrained entries of u and
-  /// v set to zero the products are those of the full matrices on the
-  /// constrained fields (u = C u_free: C^T M C), as the energy needs.
-  double
-  energy(const archdam::SparseMatrix &M, const archdam::SparseMatrix &K,
-         const AffineConstraints<double> &constraints, const time::NewmarkState &s,
-         archdam::Vector &tmp)
-  {
-    archdam::Vector free = s.v;
-    constraints.set_zero(free);
-    M.vmult(tmp, free);
-    const double kinetic = 0.5 * (tmp * free);
-    free = s.u;
-    constraints.set_zero(free);
-    K.vmult(tmp, free);
-    return kinetic + 0.5 * (tmp * free);
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ostringstream               quiet;
-  const Parameters                 p = parameters_from_string(model);
+  const Parameters                 p = parameters_from_string(
+    testing::case_text::tall_box_on_fixed_base + testing::case_text::no_gravity);
   analysis::Simulation             sim(p, MPI_COMM_WORLD, quiet);
   sim.setup_model();
   const auto &M = sim.mass();
@@ -115,7 +78,7 @@ main(int argc, char **argv)
       s.u = u0;
       s.a = a0;
 
-      const double E0       = energy(M, K, sim.space().constraints, s, tmp);
+      const double E0       = testing::elastic_energy(M, K, sim.space().constraints, s);
       double       E        = E0;
       double       worst    = 0.; // largest violation of the identity, relative to E0
       bool         monotone = true;
@@ -125,14 +88,14 @@ main(int argc, char **argv)
           newmark.advance(zero, s);
           vbar += s.v;
           vbar *= 0.5;
-          sim.space().constraints.set_zero(vbar); // as in energy()
+          sim.space().constraints.set_zero(vbar); // as in elastic_energy()
           // dissipation dt vbar^T (alpha M + beta K) vbar
           M.vmult(tmp, vbar);
           double dissipated = c.alpha * (tmp * vbar);
           K.vmult(tmp, vbar);
           dissipated = dt * (dissipated + c.beta * (tmp * vbar));
 
-          const double E_next = energy(M, K, sim.space().constraints, s, tmp);
+          const double E_next = testing::elastic_energy(M, K, sim.space().constraints, s);
           monotone            = monotone && E_next < E;
           if (c.beta1 == 0.5)
             worst = std::max(worst, std::abs(E_next - E + dissipated) / E0);

@@ -22,6 +22,7 @@
 #include <fstream>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 using namespace archdam;
 using archdam::testing::log;
@@ -36,20 +37,15 @@ main(int argc, char **argv)
   for (unsigned int i = 0; i < z.size(); ++i)
     points << (i ? "; " : "") << "p" << i << ": " << dam.crown_upstream_face(z[i]) - 0.5
            << ", 0, " << z[i];
-  const std::string prm = "subsection Mesh\n set Source = arch dam\n subsection Arch dam\n"
-                          "  set Number of blocks = 4\n  set Cells across each block = 1\n"
-                          "  set Cells through thickness = 1\n  set Cells over height = 4\n"
-                          "  set Rock cell size = 120\n  set Water cell size = 100\n end\nend\n"
-                          "subsection Reservoir\n set Model = compressible\n"
-                          " set Bottom reflection coefficient = 0.8\n set Pressure points = " +
-                          points.str() +
-                          "\n set Profile times = 0.1\nend\n"
-                          "subsection Time integration\n set Time step = 0.01\n set End time = 0.2\nend\n"
-                          "subsection Ground motion\n subsection Component x\n"
-                          "  set File = " SOURCE_DIR "/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2\n"
-                          " end\nend\n"
-                          "subsection Output\n set Directory = run\n set Field output interval = 0\n"
-                          " set Progress = false\n set Timer summary = false\nend\n";
+  namespace case_text = testing::case_text;
+  const std::string prm =
+    case_text::coarse_arch_dam_mesh(4, "    set Number of blocks = 4\n    set Rock cell size = 120\n"
+                                       "    set Water cell size = 100\n") +
+    case_text::compressible_reservoir("  set Bottom reflection coefficient = 0.8\n"
+                                      "  set Pressure points = " + points.str() +
+                                      "\n  set Profile times = 0.1\n") +
+    case_text::time_integration(0.01, 0.2) + case_text::el_centro_x() +
+    case_text::quiet_output("run", 0);
   const Parameters p = parameters_from_string(prm);
   std::ostringstream   screen;
   analysis::Simulation sim(p, MPI_COMM_WORLD, screen);

@@ -4,13 +4,10 @@
 // exception or a silently wrong result.
 
 #include <archdam/analysis/simulation.h>
-#include <archdam/base/input_error.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 
 #include <deal.II/grid/grid_tools.h>
-
-#include <functional>
 
 #include "archdam_tests.h"
 #include "reservoir_reference.h"
@@ -19,42 +16,21 @@ using namespace archdam;
 using namespace archdam::testing;
 namespace reservoir = archdam::physics::reservoir;
 
-namespace
-{
-  void
-  expect_error(const std::string &what, const std::function<void()> &run)
-  {
-    try
-      {
-        run();
-        log() << "* " << what << "\n  accepted: NO (an InputError was expected)" << std::endl;
-      }
-    catch (const InputError &e)
-      {
-        log() << "* " << what << "\n  InputError: yes\n  " << e.what() << std::endl;
-      }
-    catch (const std::exception &e)
-      {
-        log() << "* " << what << "\n  another exception: NO\n  " << e.what() << std::endl;
-      }
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   std::ostringstream                       quiet;
 
-  expect_error("compressible water with a sound speed of 0", [] {
+  check_input_error("compressible water with a sound speed of 0", [] {
     parameters_from_string("subsection Reservoir\n set Model = compressible\n"
                            " set Sound speed = 0\nend\n");
   });
-  expect_error("Westergaard added mass with a water density of 0", [] {
+  check_input_error("Westergaard added mass with a water density of 0", [] {
     parameters_from_string("subsection Reservoir\n set Model = westergaard\n"
                            " set Water density = 0\nend\n");
   });
-  expect_error("compressible water on the box mesh, which has no reservoir", [&] {
+  check_input_error("compressible water on the box mesh, which has no reservoir", [&] {
     const Parameters p = parameters_from_string("subsection Reservoir\n set Model = "
                                                 "compressible\nend\n");
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
@@ -62,7 +38,7 @@ main(int argc, char **argv)
   });
 
   const Channel ch;
-  expect_error("a water level other than the top of the water cells, compressible water", [&] {
+  check_input_error("a water level other than the top of the water cells, compressible water", [&] {
     dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     make_channel(ch, 3, 2, 0, tria);
     reservoir::ReservoirParameters rp;
@@ -71,7 +47,7 @@ main(int argc, char **argv)
     rp.water_level     = 40.;
     reservoir::water_level(rp, tria);
   });
-  expect_error("water and dam faces that do not meet face to face", [&] {
+  check_input_error("water and dam faces that do not meet face to face", [&] {
     dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     make_channel(ch, 3, 2, 0, tria);
     // lift the dam by a quarter of a water cell: its wetted faces now

@@ -50,6 +50,7 @@
 #include <boost/property_tree/json_parser.hpp>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <cmath>
 #include <fstream>
@@ -63,6 +64,7 @@ using namespace archdam;
 using archdam::testing::check_below;
 using archdam::testing::check_relative;
 using archdam::testing::log;
+namespace case_text = archdam::testing::case_text;
 
 namespace
 {
@@ -333,35 +335,10 @@ namespace
   arch_dam_with_water()
   {
     log() << "--- C. arch dam with water: wetted and curved faces ---" << std::endl;
-    const Parameters p = parameters_from_string(R"(
-subsection Mesh
-  set Source = arch dam
-  subsection Arch dam
-    set Cells across each block = 1
-    set Cells through thickness = 1
-    set Cells over height = 4
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Reservoir
-  set Model = compressible
-end
-subsection Analysis
-  set Stages = static, dynamic
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 0.02
-end
-subsection Output
-  set Directory = envelope_arch_results
-  set Field output interval = 0
-  set Progress = false
-  set Timer summary = false
-end
-)");
+    const Parameters p = parameters_from_string(
+      case_text::coarse_arch_dam_mesh(4) + case_text::linear_elements +
+      case_text::compressible_reservoir() + "\nsubsection Analysis\n  set Stages = static, dynamic\nend\n" +
+      case_text::time_integration(0.01, 0.02) + case_text::quiet_output("envelope_arch_results", 0));
     std::ostringstream   screen;
     analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
     sim.run();

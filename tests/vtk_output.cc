@@ -50,6 +50,7 @@
 #include <deal.II/base/mpi.h>
 
 #include "archdam_tests.h"
+#include "case_text.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -60,6 +61,7 @@
 using namespace dealii;
 using namespace archdam;
 using archdam::testing::log;
+namespace case_text = archdam::testing::case_text;
 
 namespace
 {
@@ -126,19 +128,13 @@ namespace
         << "    set Cells in y = " << ny << "\n    set Cells in z = " << nz << "\n"
         << "    set Rock depth = 0\n  end\nend\n"
         << "subsection Finite element\n  set Degree = " << degree << "\nend\n"
-        << "subsection Materials\n  subsection Concrete\n"
-        << "    set Young's modulus = " << E << "\n    set Poisson's ratio = 0\n"
-        << "    set Density = " << rho << "\n  end\nend\n"
-        << "subsection Static loads\n  set Gravity = true\n"
-        << "  set Gravitational acceleration = " << g << "\nend\n"
+        << case_text::concrete_under_gravity(E, rho, g)
         << "subsection Contraction joints\n  set Model = frictional contact\n"
         << "  set Friction coefficient = 0.7\nend\n"
         << "subsection Time integration\n  set Time step = " << dt << "\n"
         << "  set End time = " << 6 * dt << "\nend\n"
         << "subsection Analysis\n  set Case name = vtk_output\nend\n"
-        << "subsection Output\n  set Directory = " << directory << "\n"
-        << "  set Field output interval = 2\n  set Progress = false\n"
-        << "  set Timer summary = false\nend\n";
+        << case_text::quiet_output(directory, 2);
     const Parameters   p = parameters_from_string(prm.str());
     std::ostringstream screen;
     analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
@@ -175,38 +171,11 @@ namespace
   {
     log() << "--- Gmsh example with compressible water, El Centro ---" << std::endl;
     const std::string directory = fresh_directory("vtk_output_water");
-    const std::string prm       = R"(
-subsection Mesh
-  set Source = gmsh
-  subsection Gmsh
-    set File = )" SOURCE_DIR R"(/../prm/gmsh_blocks_v4.msh
-  end
-end
-subsection Finite element
-  set Degree = 1
-end
-subsection Reservoir
-  set Model = compressible
-end
-subsection Time integration
-  set Time step = 0.01
-  set End time = 0.04
-end
-subsection Ground motion
-  subsection Component x
-    set File = )" SOURCE_DIR R"(/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2
-  end
-end
-subsection Analysis
-  set Case name = vtk_output_water
-end
-subsection Output
-  set Directory = vtk_output_water
-  set Field output interval = 2
-  set Progress = false
-  set Timer summary = false
-end
-)";
+    const std::string prm       = case_text::gmsh_example_mesh() + case_text::linear_elements +
+                            case_text::compressible_reservoir() +
+                            case_text::time_integration(0.01, 0.04) + case_text::el_centro_x() +
+                            "\nsubsection Analysis\n  set Case name = vtk_output_water\nend\n" +
+                            case_text::quiet_output("vtk_output_water", 2);
     const Parameters   p = parameters_from_string(prm);
     std::ostringstream screen;
     analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
