@@ -436,23 +436,20 @@ main(int argc, char **argv)
     spoil(directory + "/checkpoint");
     return std::vector<std::string>{"--resume", "--set", "Output/Directory=" + directory};
   };
+  // One entry of the manifest given another value.
+  const auto manifest_entry = [](const std::string &key, const std::string &value) {
+    return [=](const fs::path &c) {
+      auto       text = read_file(c / "manifest.txt");
+      const auto at   = text.find(key + " = ");
+      text.replace(at, text.find('\n', at) - at, key + " = " + value);
+      std::ofstream(c / "manifest.txt") << text;
+    };
+  };
   expect_error("--resume with a checkpoint of 3 MPI processes",
-               spoilt("ranks",
-                      [](const fs::path &c) {
-                        auto text = read_file(c / "manifest.txt");
-                        const auto at = text.find("ranks = ");
-                        text.replace(at, text.find('\n', at) - at, "ranks = 3");
-                        std::ofstream(c / "manifest.txt") << text;
-                      }),
+               spoilt("ranks", manifest_entry("ranks", "3")),
                "was written by 3 MPI processes, this run has " + std::to_string(n_ranks));
   expect_error("--resume with a manifest whose step is not a number",
-               spoilt("manifest",
-                      [](const fs::path &c) {
-                        auto text = read(c / "manifest.txt");
-                        const auto at = text.find("step = ");
-                        text.replace(at, text.find('\n', at) - at, "step = ten");
-                        std::ofstream(c / "manifest.txt") << text;
-                      }),
+               spoilt("manifest", manifest_entry("step", "ten")),
                "manifest/checkpoint/manifest.txt' is damaged (step)");
   expect_error("--resume with an empty manifest",
                spoilt("emptied", [](const fs::path &c) { std::ofstream(c / "manifest.txt"); }),
