@@ -188,7 +188,7 @@ main(int argc, char **argv)
             << "condensed on the pairs: per step " << m("condensed", "per step")
             << " s, joints on / joints off (condensed / glued): "
             << m("condensed", "per step") / m("glued", "per step")
-            << " (target <= 1.3); build of C with its factorization " << m("condensed", "C build")
+            << " (target <= 1.3); build of C from the Schur complement " << m("condensed", "C build")
             << " s; contact iterations per step: average "
             << m("condensed", "iterations average") << "; largest difference of a joint's peak "
             << "opening from the predictor and corrector's " << condensed_difference << " m\n"

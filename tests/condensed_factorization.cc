@@ -17,6 +17,7 @@
 
 #include "archdam_tests.h"
 
+#include <cmath>
 #include <random>
 
 using namespace archdam;
@@ -26,7 +27,9 @@ namespace
 {
   /// A on an n^3 grid: 7-point Laplacian plus @p mass on the diagonal; with
   /// @p indefinite the block of the second half of the unknowns with itself
-  /// is negated, which keeps A symmetric and makes it indefinite.
+  /// is negated, which keeps A symmetric and makes it indefinite. Rows and
+  /// columns are scaled by 10^-1 ... 10^1 (as displacements and pressures
+  /// are), so that MUMPS's scaling of the matrix is exercised.
   void
   make_matrix(const unsigned int n, const double mass, const bool indefinite, archdam::SparseMatrix &A,
               const IndexSet &owned)
@@ -56,7 +59,10 @@ namespace
     A.reinit(owned, owned, dsp, MPI_COMM_WORLD);
     for (const auto &[r, c, v] : entries)
       {
-        const double value = indefinite && r >= N / 2 && c >= N / 2 ? -v : v;
+        const auto   scale = [](const unsigned int i) {
+          return std::pow(10., 0.5 * (static_cast<double>((37 * i) % 5) - 2.));
+        };
+        const double value = scale(r) * scale(c) * (indefinite && r >= N / 2 && c >= N / 2 ? -v : v);
         if (owned.is_element(r))
           A.set(r, c, value);
         if (r != c && owned.is_element(c))
@@ -112,30 +118,32 @@ namespace
                                 "difference relative to its largest entry",
                          worst_inverse / largest, 1e-10);
 
-    // One condensed solve with a load on the interface against A^{-1} (b - q).
+    // Condensed solves with a load on the interface against A^{-1} (b - q),
+    // two in a row with different b and q (the second reuses the set-up of
+    // the first, and must not reuse its condensation).
     std::mt19937                           random(7);
     std::uniform_real_distribution<double> uniform(-1., 1.);
-    archdam::Vector                        b(owned, MPI_COMM_WORLD), x(owned, MPI_COMM_WORLD),
+    archdam::Vector b(owned, MPI_COMM_WORLD), x(owned, MPI_COMM_WORLD),
       reference(owned, MPI_COMM_WORLD);
-    std::vector<double> q(k);
-    for (auto &v : q)
-      v = uniform(random);
-    for (unsigned int g = 0; g < N; ++g)
+    for (unsigned int repeat = 0; repeat < 2; ++repeat)
       {
-        const double v = uniform(random); // the same sequence on every rank
-        if (owned.is_element(g))
-          b(g) = v;
-      }
-    b.compress(VectorOperation::insert);
-    archdam::Vector b_minus_q(b);
-    for (unsigned int g = 0; g < k; ++g)
-      if (owned.is_element(gamma[g]))
-        b_minus_q(gamma[g]) -= q[g];
-    b_minus_q.compress(VectorOperation::add);
-    plain.solve(reference, b_minus_q);
+        std::vector<double> q(k);
+        for (auto &v : q)
+          v = uniform(random);
+        for (unsigned int g = 0; g < N; ++g)
+          {
+            const double v = uniform(random); // the same sequence on every rank
+            if (owned.is_element(g))
+              b(g) = v;
+          }
+        b.compress(VectorOperation::insert);
+        archdam::Vector b_minus_q(b);
+        for (unsigned int g = 0; g < k; ++g)
+          if (owned.is_element(gamma[g]))
+            b_minus_q(gamma[g]) -= q[g];
+        b_minus_q.compress(VectorOperation::add);
+        plain.solve(reference, b_minus_q);
 
-    for (unsigned int repeat = 0; repeat < 2; ++repeat) // the second reuses the first's set-up
-      {
         std::vector<double> y;
         condensed.condense(b, y);
         dealii::Vector<double> x_gamma(k);

@@ -22,12 +22,6 @@ namespace archdam::analysis
     }
   } // namespace
 
-  /**
-   * Static stage with the joints in frictional contact (numerics.md §3, last
-   * line): the mixed method with K in place of Kbar, the whole static load in
-   * one step from the unloaded, closed joints; gravity is carried through the
-   * closed joints.
-   */
   std::vector<types::global_dof_index>
   Simulation::condensed_interface() const
   {
@@ -37,6 +31,12 @@ namespace archdam::analysis
     return {};
   }
 
+  /**
+   * Static stage with the joints in frictional contact (numerics.md §3, last
+   * line): the mixed method with K in place of Kbar, the whole static load in
+   * one step from the unloaded, closed joints; gravity is carried through the
+   * closed joints.
+   */
   void
   Simulation::solve_static_with_joints(const SparseMatrix             &stiffness,
                                        const time::FactorizedOperator &stiffness_factor,

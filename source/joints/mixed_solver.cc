@@ -117,6 +117,9 @@ namespace archdam::joints
       pairs[j / dim].for_each_B_entry(j % dim, [&](const types::global_dof_index d,
                                                    const double v) {
         const auto g = std::lower_bound(gamma.begin(), gamma.end(), d) - gamma.begin();
+        AssertThrow(g < static_cast<long>(gamma.size()) && gamma[g] == d,
+                    ExcMessage("The factorization is condensed on other DOFs than the "
+                               "node pairs'."));
         B_interface[j].emplace_back(static_cast<unsigned int>(g), v);
       });
 

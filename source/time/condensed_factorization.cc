@@ -152,10 +152,14 @@ namespace archdam::time
       for (MUMPS_INT j = 0; j <= i; ++j)
         schur(i, j) = schur(j, i) = m.schur[static_cast<std::size_t>(i) * k + j];
     if (positive_definite)
-      schur.compute_cholesky_factorization();
+      {
+        schur.set_property(LAPACKSupport::symmetric);
+        schur.compute_cholesky_factorization();
+      }
     else
       schur.compute_lu_factorization();
     std::vector<double>().swap(m.schur);
+    m.id.schur = nullptr; // read by the factorization only
 
     m.reduced.resize(k);
   }

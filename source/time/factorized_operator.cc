@@ -24,6 +24,7 @@ namespace archdam::time
       {
         if (ksp != nullptr)
           petsc_check(KSPDestroy(&ksp));
+        condensed_factor.reset(); // never two factorizations at once
         condensed_factor =
           std::make_unique<CondensedFactorization>(A, positive_definite, interface);
       }
