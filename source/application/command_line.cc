@@ -8,6 +8,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,16 @@ namespace archdam
         simulation.run(resume);
       return 0;
     }
+
+    /// Write one message line to @p err in a single write: under mpiexec the
+    /// standard output and error of rank 0 reach the terminal (or log file)
+    /// through separate channels, and a message written in pieces can be cut
+    /// by a line of the run's output.
+    void
+    say(std::ostream &err, const std::string &prefix, const std::string &message)
+    {
+      err << (prefix + message + '\n') << std::flush;
+    }
   } // namespace
 
   int
@@ -91,29 +102,29 @@ namespace archdam
     catch (const InputError &e)
       {
         if (talk)
-          err << "archdam: error: " << e.what() << std::endl;
+          say(err, "archdam: error: ", e.what());
         return 1;
       }
     catch (const RunStopped &e)
       {
         if (talk)
-          err << "archdam: run stopped: " << e.what() << std::endl;
+          say(err, "archdam: run stopped: ", e.what());
         return 1;
       }
     catch (const ExceptionBase &e)
       {
         if (talk)
           {
-            err << "archdam: error: ";
-            e.print_info(err);
-            err << std::endl;
+            std::ostringstream info;
+            e.print_info(info);
+            say(err, "archdam: error: ", info.str());
           }
         return 1;
       }
     catch (const std::exception &e)
       {
         if (talk)
-          err << "archdam: internal error: " << e.what() << std::endl;
+          say(err, "archdam: internal error: ", e.what());
         return 2;
       }
   }
