@@ -22,6 +22,10 @@
 // start and end of contact, dispersed over about 3 of the 40 steps of 2L/c,
 // miss up to 3/40 = 7.5 % of the impulse (the energy ratio 0.91 ~ 0.94^2 is
 // the same loss).
+// The joint's pairs carry the same force (the load is uniform), so the
+// active set settles as for one pair: at most one change of state and the
+// iteration that confirms it, 3 iterations in a step (a stale contact matrix
+// reused after every pair had opened once took 37).
 
 #include <archdam/time/newmark.h>
 
@@ -102,6 +106,9 @@ namespace
     const double stress_ref = rigid_wall ? rho * c * v0 : rho * c * v0 / 2;
     log << (rigid_wall ? "bar against a rigid wall" : "two bars") << ": contact problem "
         << "converged every step: " << (all_converged ? "yes" : "NO") << std::endl;
+    log << "  contact iterations in a step: at most 3 (its pairs carry the same force, so the "
+        << "active set settles as for one pair: closed or open, then the check): "
+        << testing::yes(max_iterations <= 3) << std::endl;
     testing::check_relative("  interface stress [Pa] (mean over the contact)", sum / count,
                             stress_ref, 0.03);
     testing::check_relative("  contact duration [s]", t_end, 2 * L / c, 0.05);

@@ -177,8 +177,10 @@ namespace archdam::joints
     dealii::Vector<double> f(n);
     // The matrix depends only on the states and the slip directions: its LU
     // is kept and reused while they stay the same (most steps of a dynamic
-    // run, once the joints have settled).
-    const bool same = factorized && state == factor_states &&
+    // run, once the joints have settled). They are recorded whenever the
+    // matrix is rebuilt, also with every pair open (n = 0): the pairs that
+    // close again then get their matrix anew.
+    const bool same = state == factor_states &&
                       [&] {
                         for (unsigned int i = 0; i < pairs.size(); ++i)
                           if (state[i] == PairState::slip &&
@@ -188,7 +190,12 @@ namespace archdam::joints
                         return true;
                       }();
     if (!same)
-      factor.reinit(n, n);
+      {
+        factor.reinit(n, n);
+        factor_states     = state;
+        factor_directions = direction;
+        factor_ratios     = slip_ratio;
+      }
     const auto flexibility = [&](const unsigned int b, const unsigned int l,
                                  const unsigned int i, const unsigned int k) {
       return h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
@@ -238,13 +245,7 @@ namespace archdam::joints
     if (n > 0)
       {
         if (!same)
-          {
-            factor.compute_lu_factorization();
-            factorized        = true;
-            factor_states     = state;
-            factor_directions = direction;
-            factor_ratios     = slip_ratio;
-          }
+          factor.compute_lu_factorization();
         factor.solve(f);
       }
     std::fill(force.begin(), force.end(), 0.);

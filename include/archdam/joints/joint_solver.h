@@ -207,9 +207,8 @@ namespace archdam::joints
     /// Relative displacement of the pairs at zero pair forces.
     std::vector<double> s;
     /// LU of the last fixed-state system and the states and slip directions
-    /// it was built for.
+    /// it was built for (none before the first).
     dealii::LAPACKFullMatrix<double>     factor;
-    bool                                 factorized = false;
     std::vector<PairState>               factor_states;
     std::vector<dealii::Tensor<1, dim>>  factor_directions;
     std::vector<double>                  factor_ratios;
