@@ -74,7 +74,7 @@ namespace archdam::analysis
     if (n_steps == 0)
       throw InputError("Time integration: End time is shorter than one time step.");
 
-    history = std::make_unique<output::HistoryWriter>(p.output.directory,
+    history = std::make_unique<output::HistoryWriter>(p.output.directory + "/histories.csv",
                                                       monitor->column_names(), comm);
 
     const auto rayleigh = p.damping.rayleigh_coefficients();
@@ -186,7 +186,7 @@ namespace archdam::analysis
               }
             // The results up to the last good step stay: the histories end
             // with it, the summary says why and when the run stopped.
-            history->finish();
+            history->write_hdf5(p.output.directory + "/histories.h5");
             if (pressure)
               pressure->finish();
             stress_envelope->write(p.output.directory, summary);
@@ -250,7 +250,7 @@ namespace archdam::analysis
                    << std::endl;
           }
       }
-    history->finish();
+    history->write_hdf5(p.output.directory + "/histories.h5");
     if (pressure)
       pressure->finish();
     stress_envelope->write(p.output.directory, summary);

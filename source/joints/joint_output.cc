@@ -25,7 +25,7 @@ namespace archdam::joints
     , peak_opening(pairs.size(), 0.)
     , peak_time(pairs.size(), 0.)
   {
-    names.push_back("time [s]");
+    std::vector<std::string> names{"time [s]"};
     for (const auto &entry : Utilities::split_string_list(p.monitor_points, ';'))
       {
         const auto colon = entry.find(':');
@@ -54,14 +54,8 @@ namespace archdam::joints
         names.push_back(name + ".opening [m]");
         names.push_back(name + ".slip [m]");
       }
-    if (writer)
-      {
-        csv.open(directory + "/joint_histories_" + stage + ".csv");
-        std::string header;
-        for (unsigned int c = 0; c < names.size(); ++c)
-          header += (c ? "," : "") + names[c];
-        output::append_line(csv, header + '\n');
-      }
+    histories = std::make_unique<output::HistoryWriter>(
+      directory + "/joint_histories_" + stage + ".csv", std::move(names), pairs.communicator());
   }
 
   void
@@ -73,7 +67,7 @@ namespace archdam::joints
         row.push_back(std::max(0., joints.gap(i)));
         row.push_back(joints.slip(i));
       }
-    append(row);
+    histories->append(row);
     for (unsigned int i = 0; i < pairs.size(); ++i)
       if (joints.gap(i) > peak_opening[i])
         {
@@ -83,37 +77,21 @@ namespace archdam::joints
   }
 
   void
-  JointOutput::append(const std::vector<double> &row)
-  {
-    table.push_back(row);
-    on_rank_zero(pairs.communicator(), [&] {
-      std::ostringstream line;
-      line << std::setprecision(10);
-      for (unsigned int c = 0; c < row.size(); ++c)
-        line << (c ? "," : "") << row[c];
-      line << '\n';
-      output::append_line(csv, line.str());
-    });
-  }
-
-  void
   JointOutput::save(std::ostream &out) const
   {
-    binary::write_all(out, table, peak_opening, peak_time, pvd_records);
+    histories->save(out);
+    binary::write_all(out, peak_opening, peak_time, pvd_records);
   }
 
   void
   JointOutput::load(std::istream &in)
   {
-    std::vector<std::vector<double>> rows;
-    binary::read_all(in, rows, peak_opening, peak_time, pvd_records);
+    histories->load(in);
+    binary::read_all(in, peak_opening, peak_time, pvd_records);
     if (peak_opening.size() != pairs.size())
       throw InputError("Checkpoint: the saved joint state has " +
                        std::to_string(peak_opening.size()) + " node pairs, the model " +
                        std::to_string(pairs.size()) + ".");
-    AssertThrow(table.empty(), ExcMessage("load() starts a new history"));
-    for (const auto &row : rows)
-      append(row);
   }
 
   void

@@ -15,24 +15,12 @@ namespace archdam::output
 {
   using namespace dealii;
 
-  HistoryWriter::HistoryWriter(const std::string       &directory,
-                               std::vector<std::string> columns,
-                               const MPI_Comm           comm)
+  HistoryWriter::HistoryWriter(std::string file, std::vector<std::string> columns,
+                               const MPI_Comm comm)
     : comm(comm)
-    , directory(directory)
+    , file(std::move(file))
     , names(std::move(columns))
-  {
-    on_rank_zero(comm, [&] {
-      const std::string file = directory + "/histories.csv";
-      csv.open(file);
-      if (!csv)
-        throw InputError("Output: cannot write '" + file + "'.");
-      std::string header;
-      for (unsigned int i = 0; i < names.size(); ++i)
-        header += (i ? "," : "") + names[i];
-      append_line(csv, header + '\n');
-    });
-  }
+  {}
 
   void
   HistoryWriter::append(const std::vector<double> &row)
@@ -40,6 +28,15 @@ namespace archdam::output
     table.push_back(row);
     on_rank_zero(comm, [&] {
       std::ostringstream line;
+      if (table.size() == 1)
+        {
+          csv.open(file);
+          if (!csv)
+            throw InputError("Output: cannot write '" + file + "'.");
+          for (unsigned int i = 0; i < names.size(); ++i)
+            line << (i ? "," : "") << names[i];
+          line << '\n';
+        }
       line << std::setprecision(10);
       for (unsigned int i = 0; i < row.size(); ++i)
         line << (i ? "," : "") << row[i];
@@ -60,8 +57,8 @@ namespace archdam::output
     std::vector<std::vector<double>> rows;
     binary::read(in, rows);
     if (!rows.empty() && rows.front().size() != names.size())
-      throw InputError("Checkpoint: the saved histories have " +
-                       std::to_string(rows.front().size()) + " columns, the monitors " +
+      throw InputError("Checkpoint: the saved rows of '" + file + "' have " +
+                       std::to_string(rows.front().size()) + " columns, this case " +
                        std::to_string(names.size()) + ".");
     AssertThrow(table.empty(), ExcMessage("load() starts a new history"));
     for (const auto &row : rows)
@@ -69,7 +66,7 @@ namespace archdam::output
   }
 
   void
-  HistoryWriter::finish()
+  HistoryWriter::write_hdf5(const std::string &hdf5_file) const
   {
     if (table.empty())
       return;
@@ -78,10 +75,9 @@ namespace archdam::output
       for (unsigned int r = 0; r < table.size(); ++r)
         for (unsigned int c = 0; c < names.size(); ++c)
           data(r, c) = table[r][c];
-      const std::string name = directory + "/histories.h5";
       {
-        HDF5::File file(temporary_name(name), HDF5::File::FileAccessMode::create);
-        auto dataset = file.create_dataset<double>("histories", {table.size(), names.size()});
+        HDF5::File h5(temporary_name(hdf5_file), HDF5::File::FileAccessMode::create);
+        auto dataset = h5.create_dataset<double>("histories", {table.size(), names.size()});
         dataset.write(data);
         dataset.set_attribute<std::string>(
           "columns", std::accumulate(std::next(names.begin()), names.end(), names.front(),
@@ -89,7 +85,7 @@ namespace archdam::output
                                        return a + "," + b;
                                      }));
       }
-      commit_temporary(name);
+      commit_temporary(hdf5_file);
     });
   }
 } // namespace archdam::output

@@ -24,6 +24,14 @@ namespace archdam::output
     : space(space)
     , points(parse_monitor_points(point_text))
     , directory(directory)
+    , table(directory + "/pressure_histories.csv",
+            [&] {
+              std::vector<std::string> names{"time [s]"};
+              for (const auto &pt : points)
+                names.push_back(pt.name + ".p [Pa]");
+              return names;
+            }(),
+            space.comm)
   {
     for (const auto &t : Utilities::split_string_list(profile_times, ','))
       times.push_back(std::stod(t));
@@ -76,51 +84,25 @@ namespace archdam::output
     std::vector<double> row{state.time};
     const auto          p = evaluate(state.u);
     row.insert(row.end(), p.begin(), p.end());
-    append(row);
-  }
-
-  void
-  PressureRecorder::append(const std::vector<double> &row)
-  {
-    rows.push_back(row);
-    on_rank_zero(space.comm, [&] {
-      std::ofstream csv(directory + "/pressure_histories.csv",
-                        rows.size() == 1 ? std::ios::trunc : std::ios::app);
-      std::ostringstream line;
-      if (rows.size() == 1)
-        {
-          line << "time [s]";
-          for (const auto &pt : points)
-            line << "," << pt.name << ".p [Pa]";
-          line << "\n";
-        }
-      line << std::setprecision(10);
-      for (unsigned int c = 0; c < row.size(); ++c)
-        line << (c ? "," : "") << row[c];
-      line << "\n";
-      append_line(csv, line.str());
-    });
+    table.append(row);
   }
 
   void
   PressureRecorder::save(std::ostream &out) const
   {
-    binary::write(out, rows);
+    table.save(out);
   }
 
   void
   PressureRecorder::load(std::istream &in)
   {
-    std::vector<std::vector<double>> saved;
-    binary::read(in, saved);
-    rows.clear();
-    for (const auto &row : saved)
-      append(row);
+    table.load(in);
   }
 
   void
   PressureRecorder::finish() const
   {
+    const auto &rows = table.rows();
     if (points.empty() || rows.empty() || Utilities::MPI::this_mpi_process(space.comm) != 0)
       return;
     // the recorded step nearest to each profile time

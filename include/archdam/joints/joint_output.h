@@ -1,9 +1,10 @@
 #pragma once
 
 #include <archdam/joints/joint_solver.h>
+#include <archdam/output/histories.h>
 #include <archdam/output/summary.h>
 
-#include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,12 +42,12 @@ namespace archdam::joints
     const std::vector<std::string> &
     columns() const
     {
-      return names;
+      return histories->columns();
     }
     const std::vector<std::vector<double>> &
     rows() const
     {
-      return table;
+      return histories->rows();
     }
 
     /// The rows, peaks and field records so far, for a checkpoint
@@ -59,17 +60,12 @@ namespace archdam::joints
     load(std::istream &in);
 
   private:
-    /// Keep @p row and append it to the joint histories file.
-    void
-    append(const std::vector<double> &row);
-
     const NodePairs                 &pairs;
     const std::string                directory, stage;
     const bool                       writer;
     std::vector<unsigned int>        monitored;
-    std::vector<std::string>         names;
-    std::vector<std::vector<double>> table;
-    std::ofstream                    csv;
+    /// Opening and slip of the monitored pairs.
+    std::unique_ptr<output::HistoryWriter> histories;
     std::vector<double>              peak_opening, peak_time;
     std::vector<std::pair<double, std::string>> pvd_records;
   };

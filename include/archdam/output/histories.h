@@ -9,26 +9,27 @@
 namespace archdam::output
 {
   /**
-   * Time histories of the monitored quantities. Rank 0 appends one CSV row per
-   * step to `histories.csv` in one write and flushes it, so a killed run
-   * leaves a valid prefix of complete rows (output/atomic_file.h); at the end
-   * the whole table goes to `histories.h5` (written whole, then renamed) as
-   * the dataset
-   * "histories" (rows = steps) with the column names as the attribute
-   * "columns". Every row is also kept in memory for peaks and tests.
+   * A table of time histories with its CSV file: the monitors'
+   * (`histories.csv`), the joints' and the water pressure's. Rank 0 creates
+   * the file with its header at the first row (so that a run stopped before
+   * it, or a failed --resume, leaves an earlier file alone), appends every
+   * row in one write and flushes it, so a killed run leaves a valid prefix of
+   * complete rows (output/atomic_file.h). Every row is also kept in memory
+   * for peaks, envelopes, checkpoints and tests. Collective calls.
    */
   class HistoryWriter
   {
   public:
-    HistoryWriter(const std::string &directory, std::vector<std::string> columns,
-                  MPI_Comm comm);
+    HistoryWriter(std::string file, std::vector<std::string> columns, MPI_Comm comm);
 
     void
     append(const std::vector<double> &row);
 
-    /// Write the HDF5 copy.
+    /// The whole table as the HDF5 dataset "histories" (rows = steps) with
+    /// the column names as its attribute "columns", written whole, then
+    /// renamed.
     void
-    finish();
+    write_hdf5(const std::string &hdf5_file) const;
 
     const std::vector<std::string> &
     columns() const
@@ -44,15 +45,15 @@ namespace archdam::output
     /// The rows so far, for a checkpoint (output/checkpoint.h).
     void
     save(std::ostream &out) const;
-    /// Continue after the rows of a checkpoint: histories.csv is written
-    /// anew with them (a killed run may have appended rows after the
+    /// Continue after the rows of a checkpoint: the file is written anew
+    /// with them (a killed run may have appended rows after the
     /// checkpoint), then append() goes on.
     void
     load(std::istream &in);
 
   private:
     MPI_Comm                         comm;
-    std::string                      directory;
+    std::string                      file;
     std::vector<std::string>         names;
     std::ofstream                    csv;
     std::vector<std::vector<double>> table;

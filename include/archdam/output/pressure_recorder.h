@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/output/histories.h>
 #include <archdam/output/monitors.h>
 #include <archdam/time/newmark.h>
 
@@ -40,7 +41,7 @@ namespace archdam::output
     const std::vector<std::vector<double>> &
     histories() const
     {
-      return rows;
+      return table.rows();
     }
 
     /// The rows so far, for a checkpoint (output/checkpoint.h).
@@ -52,11 +53,6 @@ namespace archdam::output
     load(std::istream &in);
 
   private:
-    /// Keep @p row and append it to pressure_histories.csv (the first one
-    /// with the header, to a new file).
-    void
-    append(const std::vector<double> &row);
-
     struct Weights
     {
       std::vector<dealii::types::global_dof_index> dofs;
@@ -67,6 +63,7 @@ namespace archdam::output
     std::vector<double>               times;
     std::vector<Weights>              weights;
     std::string                       directory;
-    std::vector<std::vector<double>>  rows; // time, p_1 ... p_n
+    /// time, p_1 ... p_n
+    HistoryWriter                     table;
   };
 } // namespace archdam::output
