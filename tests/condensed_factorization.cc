@@ -92,6 +92,23 @@ namespace
     // MUMPS's LDL^T through PETSc for the indefinite case (Cholesky would fail).
     plain.factorize(A, !indefinite);
     time::CondensedFactorization condensed(A, !indefinite, gamma);
+    // An interface that is not sorted, unique DOFs of A is refused.
+    for (const auto &[what, wrong] :
+         std::vector<std::pair<std::string, std::vector<types::global_dof_index>>>{
+           {"unsorted", {5, 3}}, {"repeated", {3, 3}}, {"beyond the matrix", {3, N}}})
+      {
+        bool refused = false;
+        try
+          {
+            time::CondensedFactorization(A, !indefinite, wrong);
+          }
+        catch (const ExceptionBase &)
+          {
+            refused = true;
+          }
+        testing::log() << name << ": an interface " << what
+                       << " refused: " << testing::yes(refused) << std::endl;
+      }
 
     // S^{-1} against (A^{-1})_ΓΓ, column by column.
     archdam::Vector e(owned, MPI_COMM_WORLD), column(owned, MPI_COMM_WORLD);

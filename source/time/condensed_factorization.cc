@@ -6,6 +6,7 @@
 
 #include <dmumps_c.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -62,6 +63,11 @@ namespace archdam::time
     : mumps(std::make_unique<Mumps>())
     , gamma(interface)
   {
+    // The interface (NodePairs::interface()): sorted, unique, rows of A.
+    AssertThrow(std::is_sorted(gamma.begin(), gamma.end()) &&
+                  std::adjacent_find(gamma.begin(), gamma.end()) == gamma.end() &&
+                  (gamma.empty() || gamma.back() < A.m()),
+                ExcMessage("The condensed interface must be sorted, unique DOFs of the matrix."));
     auto &m    = *mumps;
     m.comm     = A.get_mpi_communicator();
     const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
