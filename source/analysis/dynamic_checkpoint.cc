@@ -28,26 +28,89 @@ namespace archdam::analysis
     }
   } // namespace
 
+  namespace
+  {
+    /// Writes a checkpoint's items (Simulation::visit_step_state()).
+    struct Saver
+    {
+      std::ostream &out;
+      template <typename... T>
+      void
+      values(const T &...v)
+      {
+        binary::write_all(out, v...);
+      }
+      template <typename T>
+      void
+      records(const T &r)
+      {
+        r.save(out);
+      }
+    };
+
+    /// Reads them back, in the same order.
+    struct Loader
+    {
+      std::istream &in;
+      template <typename... T>
+      void
+      values(T &...v)
+      {
+        binary::read_all(in, v...);
+      }
+      template <typename T>
+      void
+      records(T &r)
+      {
+        r.load(in);
+      }
+    };
+  } // namespace
+
+  template <typename Self, typename Archive>
+  void
+  Simulation::visit_step_state(Self &self, Archive &a)
+  {
+    a.values(self.current.time, self.current.step, self.current.u, self.current.v,
+             self.current.a, self.contact_iterations, self.max_contact_iterations,
+             self.non_converged_times);
+    if (self.joint_solver)
+      a.records(*self.joint_solver);
+    if (self.massed_foundation)
+      a.records(*self.massed_foundation);
+  }
+
+  template <typename Self, typename Archive>
+  void
+  Simulation::visit_records(Self &self, Archive &a)
+  {
+    // The records so far: monitor, pressure and joint histories (their
+    // files are written anew from them on resume), envelopes, the energy
+    // sums, the summary (static and modal results included), field records.
+    a.values(self.peak_stress.value, self.peak_stress.where, self.peak_stress_time);
+    a.records(*self.history);
+    if (self.pressure)
+      a.records(*self.pressure);
+    if (self.joint_output)
+      a.records(*self.joint_output);
+    a.records(*self.stress_envelope);
+    a.records(*self.energy);
+    a.records(*self.fields);
+    a.records(self.summary);
+  }
+
   void
   Simulation::save_step_state(std::ostream &out) const
   {
-    binary::write_all(out, current.time, current.step, current.u, current.v, current.a,
-                      contact_iterations, max_contact_iterations, non_converged_times);
-    if (joint_solver)
-      joint_solver->save(out);
-    if (massed_foundation)
-      massed_foundation->save_state(out);
+    Saver saver{out};
+    visit_step_state(*this, saver);
   }
 
   void
   Simulation::load_step_state(std::istream &in)
   {
-    binary::read_all(in, current.time, current.step, current.u, current.v, current.a,
-                     contact_iterations, max_contact_iterations, non_converged_times);
-    if (joint_solver)
-      joint_solver->load(in);
-    if (massed_foundation)
-      massed_foundation->load_state(in);
+    Loader loader{in};
+    visit_step_state(*this, loader);
   }
 
   void
@@ -57,19 +120,8 @@ namespace archdam::analysis
     std::ostringstream out;
     binary::write(out, partition_signature(*fe_space));
     save_step_state(out);
-    // The records so far: monitor, pressure and joint histories (their
-    // files are written anew from them on resume), envelopes, the energy
-    // sums, the summary (static and modal results included), field records.
-    binary::write_all(out, peak_stress.value, peak_stress.where, peak_stress_time);
-    history->save(out);
-    if (pressure)
-      pressure->save(out);
-    if (joint_output)
-      joint_output->save(out);
-    stress_envelope->save(out);
-    energy->save(out);
-    fields->save(out);
-    summary.save(out);
+    Saver saver{out};
+    visit_records(*this, saver);
 
     output::CheckpointManifest manifest;
     manifest.n_ranks          = Utilities::MPI::n_mpi_processes(comm);
@@ -99,16 +151,8 @@ namespace archdam::analysis
     std::uint64_t      partition = 0;
     binary::read(in, partition); // checked by check_checkpoint()
     load_step_state(in);
-    binary::read_all(in, peak_stress.value, peak_stress.where, peak_stress_time);
-    history->load(in);
-    if (pressure)
-      pressure->load(in);
-    if (joint_output)
-      joint_output->load(in);
-    stress_envelope->load(in);
-    energy->load(in);
-    fields->load(in);
-    summary.load(in);
+    Loader loader{in};
+    visit_records(*this, loader);
     if (current.step != resume_from->step || in.peek() != std::char_traits<char>::eof())
       throw InputError("Checkpoint: the saved state does not match this case (step " +
                        std::to_string(current.step) + ", expected " +

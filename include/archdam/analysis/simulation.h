@@ -188,6 +188,15 @@ namespace archdam::analysis
     save_step_state(std::ostream &out) const;
     void
     load_step_state(std::istream &in);
+    /// The one list of what a checkpoint holds, read or written in the
+    /// same order: the step state (@p a.values() for plain values,
+    /// a.records() for objects with save()/load()), then the records.
+    template <typename Self, typename Archive>
+    static void
+    visit_step_state(Self &self, Archive &a);
+    template <typename Self, typename Archive>
+    static void
+    visit_records(Self &self, Archive &a);
     /// Everything the rest of the run needs (step state, histories,
     /// envelopes, energy sums, summary, field records) to
     /// Output/Directory/checkpoint (output/checkpoint.h).

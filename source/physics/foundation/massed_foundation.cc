@@ -34,7 +34,7 @@ namespace archdam::physics::foundation
                                                    prescribed.mass_columns,
                                                    prescribed.stiffness_columns);
       }
-    space.reinit(load);
+    space.reinit(load_with_free_field);
   }
 
   void
@@ -77,22 +77,22 @@ namespace archdam::physics::foundation
     else
       {
         const auto start = std::chrono::steady_clock::now();
-        load             = load_next;
-        viscous->add_free_field_load(t_next, load);
+        load_with_free_field = load_next;
+        viscous->add_free_field_load(t_next, load_with_free_field);
         update_seconds += seconds_since(start);
-        newmark.advance(load, s, solve);
+        newmark.advance(load_with_free_field, s, solve);
       }
   }
 
   void
-  MassedFoundation::save_state(std::ostream &out) const
+  MassedFoundation::save(std::ostream &out) const
   {
     if (mtf)
       mtf->save(out);
   }
 
   void
-  MassedFoundation::load_state(std::istream &in)
+  MassedFoundation::load(std::istream &in)
   {
     if (mtf)
       mtf->load(in);

@@ -85,17 +85,18 @@ namespace archdam::physics::foundation
     }
 
     /// The boundary's state (MTF histories; the viscous boundary has none),
-    /// for a checkpoint (output/checkpoint.h); load_state() after start().
+    /// for a checkpoint (output/checkpoint.h); load() after start().
     void
-    save_state(std::ostream &out) const;
+    save(std::ostream &out) const;
     void
-    load_state(std::istream &in);
+    load(std::istream &in);
 
   private:
     std::unique_ptr<MultiTransmittingBoundary> mtf;
     std::unique_ptr<ViscousSpringBoundary>     viscous;
     time::PrescribedDofs                       prescribed;
-    Vector                                     load;
+    /// The viscous boundary's step load: the stage's plus the free field's.
+    Vector                                     load_with_free_field;
     double                                     dt;
     double                                     update_seconds = 0.;
   };
