@@ -23,9 +23,10 @@
 // miss up to 3/40 = 7.5 % of the impulse (the energy ratio 0.91 ~ 0.94^2 is
 // the same loss).
 // The joint's pairs carry the same force (the load is uniform), so the
-// active set settles as for one pair: at most one change of state and the
-// iteration that confirms it, 3 iterations in a step (a stale contact matrix
-// reused after every pair had opened once took 37).
+// active set settles as for one pair: at most two changes of state
+// (separation -> stick -> slip, the joint being frictionless) and the
+// iteration that confirms them, 3 iterations in a step (a stale contact
+// matrix reused after every pair had opened once took 37).
 
 #include <archdam/time/newmark.h>
 
@@ -107,7 +108,7 @@ namespace
     log << (rigid_wall ? "bar against a rigid wall" : "two bars") << ": contact problem "
         << "converged every step: " << (all_converged ? "yes" : "NO") << std::endl;
     log << "  contact iterations in a step: at most 3 (its pairs carry the same force, so the "
-        << "active set settles as for one pair: closed or open, then the check): "
+        << "active set settles as for one pair: two changes of state, then the check): "
         << testing::yes(max_iterations <= 3) << std::endl;
     testing::check_relative("  interface stress [Pa] (mean over the contact)", sum / count,
                             stress_ref, 0.03);

@@ -85,7 +85,7 @@ namespace archdam::analysis
   Simulation::visit_records(Self &self, Archive &a)
   {
     // The records so far: monitor, pressure and joint histories (their
-    // files are written anew from them on resume), envelopes, the energy
+    // files are written anew from them once a resume has read everything), envelopes, the energy
     // sums, the summary (static and modal results included), field records.
     a.values(self.peak_stress.value, self.peak_stress.where, self.peak_stress_time);
     a.records(*self.history);
@@ -157,5 +157,12 @@ namespace archdam::analysis
       throw InputError("Checkpoint: the saved state does not match this case (step " +
                        std::to_string(current.step) + ", expected " +
                        std::to_string(resume_from->step) + ", or data left over).");
+    // Only now, with the whole checkpoint read, are the history files cut
+    // back to its rows: a resume refused above leaves them as they were.
+    history->rewrite();
+    if (pressure)
+      pressure->rewrite_history();
+    if (joint_output)
+      joint_output->rewrite_history();
   }
 } // namespace archdam::analysis

@@ -94,7 +94,8 @@ namespace archdam::joints
                       Patterns::Selection("stop|continue"));
     prm.add_parameter("Monitor points", monitor_points,
                       "Points whose nearest node pair's opening and slip are recorded "
-                      "every step (joint_histories.csv): 'name: x, y, z; ...'.",
+                      "every step (joint_histories_static.csv, joint_histories_dynamic.csv): "
+                      "'name: x, y, z; ...'.",
                       Patterns::Anything());
   }
 

@@ -177,9 +177,9 @@ namespace archdam::joints
     dealii::Vector<double> f(n);
     // The matrix depends only on the states and the slip directions: its LU
     // is kept and reused while they stay the same (most steps of a dynamic
-    // run, once the joints have settled). They are recorded whenever the
-    // matrix is rebuilt, also with every pair open (n = 0): the pairs that
-    // close again then get their matrix anew.
+    // run, once the joints have settled). They are recorded once the
+    // matrix is rebuilt and factorized, also with every pair open (n = 0):
+    // the pairs that close again then get their matrix anew.
     const bool same = state == factor_states &&
                       [&] {
                         for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -190,12 +190,7 @@ namespace archdam::joints
                         return true;
                       }();
     if (!same)
-      {
-        factor.reinit(n, n);
-        factor_states     = state;
-        factor_directions = direction;
-        factor_ratios     = slip_ratio;
-      }
+      factor.reinit(n, n);
     const auto flexibility = [&](const unsigned int b, const unsigned int l,
                                  const unsigned int i, const unsigned int k) {
       return h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
@@ -242,12 +237,16 @@ namespace archdam::joints
             f(row) = s[dim * i + k] - (k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k]);
           }
       }
-    if (n > 0)
+    if (!same)
       {
-        if (!same)
+        if (n > 0)
           factor.compute_lu_factorization();
-        factor.solve(f);
+        factor_states     = state;
+        factor_directions = direction;
+        factor_ratios     = slip_ratio;
       }
+    if (n > 0)
+      factor.solve(f);
     std::fill(force.begin(), force.end(), 0.);
     for (unsigned int a = 0; a < closed.size(); ++a)
       for (unsigned int k = 0; k < dim; ++k)

@@ -22,26 +22,43 @@ namespace archdam::output
     , names(std::move(columns))
   {}
 
+  namespace
+  {
+    std::string
+    csv_line(const std::vector<std::string> &names)
+    {
+      std::string line;
+      for (unsigned int i = 0; i < names.size(); ++i)
+        line += (i ? "," : "") + names[i];
+      return line + '\n';
+    }
+
+    std::string
+    csv_line(const std::vector<double> &row)
+    {
+      std::ostringstream line;
+      line << std::setprecision(10);
+      for (unsigned int i = 0; i < row.size(); ++i)
+        line << (i ? "," : "") << row[i];
+      line << '\n';
+      return line.str();
+    }
+  } // namespace
+
   void
   HistoryWriter::append(const std::vector<double> &row)
   {
     table.push_back(row);
     on_rank_zero(comm, [&] {
-      std::ostringstream line;
-      if (table.size() == 1)
+      if (csv.is_open())
+        append_line(csv, csv_line(row));
+      else
         {
           csv.open(file);
           if (!csv)
             throw InputError("Output: cannot write '" + file + "'.");
-          for (unsigned int i = 0; i < names.size(); ++i)
-            line << (i ? "," : "") << names[i];
-          line << '\n';
+          append_line(csv, csv_line(names) + csv_line(row));
         }
-      line << std::setprecision(10);
-      for (unsigned int i = 0; i < row.size(); ++i)
-        line << (i ? "," : "") << row[i];
-      line << '\n';
-      append_line(csv, line.str());
     });
   }
 
@@ -54,15 +71,28 @@ namespace archdam::output
   void
   HistoryWriter::load(std::istream &in)
   {
-    std::vector<std::vector<double>> rows;
-    binary::read(in, rows);
-    if (!rows.empty() && rows.front().size() != names.size())
-      throw InputError("Checkpoint: the saved rows of '" + file + "' have " +
-                       std::to_string(rows.front().size()) + " columns, this case " +
-                       std::to_string(names.size()) + ".");
     AssertThrow(table.empty(), ExcMessage("load() starts a new history"));
-    for (const auto &row : rows)
-      append(row);
+    binary::read(in, table);
+    if (!table.empty() && table.front().size() != names.size())
+      throw InputError("Checkpoint: the saved rows of '" + file + "' have " +
+                       std::to_string(table.front().size()) + " columns, this case " +
+                       std::to_string(names.size()) + ".");
+  }
+
+  void
+  HistoryWriter::rewrite()
+  {
+    on_rank_zero(comm, [&] {
+      csv.close();
+      write_atomically(file, [&](std::ostream &out) {
+        out << csv_line(names);
+        for (const auto &row : table)
+          out << csv_line(row);
+      });
+      csv.open(file, std::ios::app);
+      if (!csv)
+        throw InputError("Output: cannot write '" + file + "'.");
+    });
   }
 
   void

@@ -13,14 +13,15 @@ namespace archdam::joints
   /**
    * What the joints leave behind (numerics.md §7), written by rank 0 into the
    * output directory:
-   *  - joints.pvd with joints_NNNN.vtu: every node pair as a point with its
-   *    joint, opening (gap, m), slip (m), normal and shear stress (Pa,
-   *    compression negative) and state (0 separation, 1 stick, 2 slip);
-   *  - joint_histories.csv: opening and slip of the pair nearest to each of
-   *    `Contraction joints/Monitor points`, every recorded time;
-   *  - joint_envelopes.csv: for each joint and height z the largest opening
-   *    over time; joint_crest.csv: for each joint the largest opening at its
-   *    crest (its highest pairs), where and when;
+   *  - joints_<stage>.pvd with joints_<stage>_NNNN.vtu: every node pair as a
+   *    point with its joint, opening (gap, m), slip (m), normal and shear
+   *    stress (Pa, compression negative) and state (0 separation, 1 stick,
+   *    2 slip);
+   *  - joint_histories_<stage>.csv: opening and slip of the pair nearest to
+   *    each of `Contraction joints/Monitor points`, every recorded time;
+   *  - joint_envelopes_<stage>.csv: for each joint and height z the largest
+   *    opening over time; joint_crest_<stage>.csv: for each joint the largest
+   *    opening at its crest (its highest pairs), where and when;
    *  - in the summary, the peak opening of each joint with time and place.
    */
   class JointOutput
@@ -54,10 +55,15 @@ namespace archdam::joints
     /// (output/checkpoint.h).
     void
     save(std::ostream &out) const;
-    /// Continue after a checkpoint (the joint histories file is written
-    /// anew with its rows).
+    /// Continue after a checkpoint; rewrite_history() then writes the joint
+    /// histories file anew with its rows.
     void
     load(std::istream &in);
+    void
+    rewrite_history()
+    {
+      histories->rewrite();
+    }
 
   private:
     const NodePairs                 &pairs;

@@ -45,11 +45,15 @@ namespace archdam::output
     /// The rows so far, for a checkpoint (output/checkpoint.h).
     void
     save(std::ostream &out) const;
-    /// Continue after the rows of a checkpoint: the file is written anew
-    /// with them (a killed run may have appended rows after the
-    /// checkpoint), then append() goes on.
+    /// The rows of a checkpoint, in memory only: the file is left as it is
+    /// until rewrite(), once the whole checkpoint has been read.
     void
     load(std::istream &in);
+    /// The file anew with the rows in memory (a killed run may have
+    /// appended rows after its checkpoint), written whole and renamed; then
+    /// append() goes on.
+    void
+    rewrite();
 
   private:
     MPI_Comm                         comm;

@@ -47,10 +47,15 @@ namespace archdam::output
     /// The rows so far, for a checkpoint (output/checkpoint.h).
     void
     save(std::ostream &out) const;
-    /// Continue after the rows of a checkpoint (pressure_histories.csv is
-    /// written anew with them).
+    /// Continue after the rows of a checkpoint; rewrite_history() then
+    /// writes pressure_histories.csv anew with them.
     void
     load(std::istream &in);
+    void
+    rewrite_history()
+    {
+      table.rewrite();
+    }
 
   private:
     struct Weights
