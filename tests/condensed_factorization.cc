@@ -163,13 +163,13 @@ namespace
         b_minus_q.compress(VectorOperation::add);
         plain.solve(reference, b_minus_q);
 
-        std::vector<double> y;
+        dealii::Vector<double> y;
         condensed.condense(b, y);
         dealii::Vector<double> x_gamma(k);
         for (unsigned int g = 0; g < k; ++g)
           x_gamma[g] = y[g] - q[g];
         condensed.solve_interface(x_gamma);
-        condensed.expand(std::vector<double>(x_gamma.begin(), x_gamma.end()), x);
+        condensed.expand(x_gamma, x);
         x -= reference;
         testing::check_below(name + ": condense, interface solve, expand against A^-1 (b - q)," +
                                (repeat == 0 ? " first" : " second") +

@@ -138,7 +138,6 @@ namespace archdam::joints
           C[static_cast<std::size_t>(j) * m + i] += v * G(g, j);
     if (p.coupling == "neighbouring joints")
       keep_neighbouring_joints(pairs, C);
-    interface_x.reinit(k);
   }
 
   void
@@ -432,8 +431,7 @@ namespace archdam::joints
       {
         // 1. forward elimination: the interface's response to r at zero
         //    pair forces, z = S^{-1} y; s = w_base + h B z.
-        condensed->condense(r, reduced);
-        std::copy(reduced.begin(), reduced.end(), interface_x.begin());
+        condensed->condense(r, interface_x);
         condensed->solve_interface(interface_x);
         s.assign(m, 0.);
         for (unsigned int j = 0; j < m; ++j)
@@ -486,7 +484,7 @@ namespace archdam::joints
         dealii::Vector<double> f(force.begin(), force.end()), Gf(interface_x.size());
         G.vmult(Gf, f);
         interface_x -= Gf;
-        condensed->expand(std::vector<double>(interface_x.begin(), interface_x.end()), x);
+        condensed->expand(interface_x, x);
         return step;
       }
 

@@ -185,7 +185,7 @@ namespace archdam::time
   }
 
   void
-  CondensedFactorization::condense(const archdam::Vector &b, std::vector<double> &y) const
+  CondensedFactorization::condense(const archdam::Vector &b, dealii::Vector<double> &y) const
   {
     auto      &m    = *mumps;
     const Vec &vec  = static_cast<const Vec &>(b);
@@ -208,11 +208,13 @@ namespace archdam::time
       }
     m.icntl(26) = 1; // condensation: forward elimination, reduced right-hand side
     m.run(3, "condensation");
-    y = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
+    const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
+    y.reinit(reduced.size(), true);
+    std::copy(reduced.begin(), reduced.end(), y.begin());
   }
 
   void
-  CondensedFactorization::expand(const std::vector<double> &x_gamma,
+  CondensedFactorization::expand(const dealii::Vector<double> &x_gamma,
                                  archdam::Vector &x) const
   {
     auto      &m    = *mumps;

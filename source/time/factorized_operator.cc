@@ -57,11 +57,10 @@ namespace archdam::time
     if (condensed_factor)
       {
         // forward elimination, the interface's Schur complement, backward
-        std::vector<double> y;
-        condensed_factor->condense(b, y);
-        dealii::Vector<double> x_gamma(y.begin(), y.end());
+        dealii::Vector<double> x_gamma;
+        condensed_factor->condense(b, x_gamma);
         condensed_factor->solve_interface(x_gamma);
-        condensed_factor->expand(std::vector<double>(x_gamma.begin(), x_gamma.end()), x);
+        condensed_factor->expand(x_gamma, x);
         return;
       }
     Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));

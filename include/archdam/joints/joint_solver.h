@@ -202,7 +202,6 @@ namespace archdam::joints
     dealii::LAPACKFullMatrix<double> G;
     /// B on the interface: for every pair unknown its (interface index, value).
     std::vector<std::vector<std::pair<unsigned int, double>>> B_interface;
-    std::vector<double>                                       reduced;
     dealii::Vector<double>                                    interface_x;
     /// Relative displacement of the pairs at zero pair forces.
     std::vector<double> s;

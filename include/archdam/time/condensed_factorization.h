@@ -54,12 +54,12 @@ namespace archdam::time
     /// y = b_Γ - A_ΓI A_II^{-1} b_I, on every rank. Must be followed by
     /// expand() before the next condense().
     void
-    condense(const Vector &b, std::vector<double> &y) const;
+    condense(const Vector &b, dealii::Vector<double> &y) const;
 
     /// The full solution x from the interface values x_Γ (the same on every
     /// rank) and the right-hand side of the last condense().
     void
-    expand(const std::vector<double> &x_gamma, Vector &x) const;
+    expand(const dealii::Vector<double> &x_gamma, Vector &x) const;
 
   private:
     struct Mumps;
