@@ -13,6 +13,7 @@ packages=(
   numdiff                         # test output comparison
   python3-matplotlib              # plots (/usr/bin/python3)
   python3-vtk9                    # VTK's readers: the vtk_output test opens the results as ParaView does
+  python3-h5py                    # HDF5 for Python: the vtk_output test reads the XDMF output
   clang libclang-rt-14-dev        # fuzz targets (libFuzzer, sanitizers) in the test suite
 )
 

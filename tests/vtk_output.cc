@@ -41,8 +41,12 @@
 //    at the static output (the field is the hydrodynamic pressure), nonzero
 //    in the water later, exactly 0 on solid points and the displacement
 //    exactly 0 on water points (each field lives on its own cells).
-// The HDF5/XDMF output is written too (default Field formats) but not read:
-// Debian 12's VTK has no XDMF reader (vtkIOXdmf2 is not packaged).
+// 3. In both runs, the HDF5/XDMF output (written too, default Field formats)
+//    against the VTU output of the same run, every array value by value
+//    (tests/xdmf_output.py: the XDMF parsed as XML and its arrays read with
+//    h5py, as Debian 12's VTK has no XDMF reader): the same points, the same
+//    arrays with all their components (the stress tensor's nine), and the same
+//    values to 1e-6 of each array's largest magnitude (Float32 in the VTU).
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/parameters/parameters.h>
@@ -77,15 +81,16 @@ namespace
 
   bool all_passed = true;
 
-  /// Run tests/vtk_output.py on rank 0 and print what it says. Collective.
+  /// Run the script tests/@p script with @p arguments on rank 0 and print
+  /// what it says. Collective.
   void
-  read_with_vtk(const std::string &pvd, const std::string &arguments)
+  run_script(const std::string &script, const std::string &arguments)
   {
     int status = 0;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {
         const std::string command =
-          "/usr/bin/python3 " SOURCE_DIR "/vtk_output.py " + pvd + " " + arguments + " 2>&1";
+          "/usr/bin/python3 " SOURCE_DIR "/" + script + " " + arguments + " 2>&1";
         FILE *pipe = popen(command.c_str(), "r");
         char  line[1024];
         while (pipe && fgets(line, sizeof line, pipe))
@@ -94,6 +99,22 @@ namespace
       }
     status     = Utilities::MPI::broadcast(MPI_COMM_WORLD, status, 0);
     all_passed = all_passed && status == 0;
+  }
+
+  /// Read @p pvd with tests/vtk_output.py.
+  void
+  read_with_vtk(const std::string &pvd, const std::string &arguments)
+  {
+    run_script("vtk_output.py", pvd + " " + arguments);
+  }
+
+  /// The HDF5/XDMF output of the run in @p directory against its VTU output,
+  /// array by array (tests/xdmf_output.py).
+  void
+  compare_xdmf_with_vtu(const std::string &directory)
+  {
+    log() << "solution.xdmf and its .h5 files against solution.pvd:" << std::endl;
+    run_script("xdmf_output.py", directory);
   }
 
   /// "0,T,2T,...": @p n_outputs times of a series written every @p interval.
@@ -164,6 +185,7 @@ namespace
                                " " + plane.str();
     read_with_vtk(directory + "/joints_static.pvd", joints + " --times 0");
     read_with_vtk(directory + "/joints_dynamic.pvd", joints + " --times " + times(4, 2 * dt));
+    compare_xdmf_with_vtu(directory);
   }
 
   void
@@ -189,6 +211,7 @@ namespace
               << solution_arrays << " --materials 1,2,10,11,12 --water --times "
               << times(3, 0.02);
     read_with_vtk(directory + "/solution.pvd", arguments.str());
+    compare_xdmf_with_vtu(directory);
   }
 } // namespace
 

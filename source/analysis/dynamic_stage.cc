@@ -70,9 +70,7 @@ namespace archdam::analysis
     if (end <= 0)
       throw InputError("Time integration/End time is 0 and there is no ground motion to "
                        "take the duration from.");
-    const unsigned int n_steps = static_cast<unsigned int>(std::lround(end / dt));
-    if (n_steps == 0)
-      throw InputError("Time integration: End time is shorter than one time step.");
+    const unsigned int n_steps = p.time_integration.n_steps(end);
 
     history = std::make_unique<output::HistoryWriter>(p.output.directory + "/histories.csv",
                                                       monitor->column_names(), comm);

@@ -5,7 +5,11 @@
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/config.h>
 #include <deal.II/base/mpi.h>
+
+#include <dmumps_c.h>
+#include <petscversion.h>
 
 #include <iostream>
 #include <sstream>
@@ -22,16 +26,63 @@ namespace archdam
       "Usage:\n"
       "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only | --resume]\n"
       "  archdam --print-parameters [text|json|xml|latex]\n"
-      "  archdam --help\n";
+      "  archdam --help | --version\n";
+
+    const char *help =
+      "ArchDam: nonlinear earthquake analysis of concrete arch dams with contraction\n"
+      "joints, reservoir and foundation.\n\n"
+      "Options:\n"
+      "  CASE.prm                  the case file to run (its includes are read relative\n"
+      "                            to the file that names them)\n"
+      "  --set \"Sec/Name=value\"    change one parameter of the case (repeatable; as\n"
+      "                            if the line were at the end of the case file)\n"
+      "  --mesh-only               build and check the mesh, write it and its report,\n"
+      "                            then stop (no analysis)\n"
+      "  --resume                  continue a run from its last checkpoint in the same\n"
+      "                            output folder\n"
+      "  --print-parameters [FMT]  every parameter with its default, allowed values and\n"
+      "                            documentation (FMT: text (default), json, xml, latex)\n"
+      "  --help, -h                this text\n"
+      "  --version                 ArchDam's version and those of deal.II, PETSc, MUMPS\n\n"
+      "Example:\n"
+      "  archdam prm/box_dam_on_rock.prm --set \"Time integration/End time=1\"\n"
+      "  mpirun -np 2 archdam prm/paper_235m_dam.prm\n\n"
+      "Documentation: doc/user-guide.md (running a case, results), doc/parameters.prm\n"
+      "(every parameter), doc/bad-input.md (messages), doc/verification.md; the\n"
+      "motion tool: archdam-motion --help.\n";
+
+    std::string
+    version()
+    {
+      return std::string("ArchDam ") + ARCHDAM_VERSION + "\ndeal.II " + DEAL_II_PACKAGE_VERSION +
+             "\nPETSc " + std::to_string(PETSC_VERSION_MAJOR) + "." +
+             std::to_string(PETSC_VERSION_MINOR) + "." + std::to_string(PETSC_VERSION_SUBMINOR) +
+             "\nMUMPS " + MUMPS_VERSION + "\n";
+    }
+
+    /// Write one message line to @p err in a single write: under mpiexec the
+    /// standard output and error of rank 0 reach the terminal (or log file)
+    /// through separate channels, and a message written in pieces can be cut
+    /// by a line of the run's output.
+    void
+    say(std::ostream &err, const std::string &prefix, const std::string &message)
+    {
+      err << (prefix + message + '\n') << std::flush;
+    }
 
     int
-    run(const std::vector<std::string> &args, std::ostream &out)
+    run(const std::vector<std::string> &args, std::ostream &out, std::ostream &warnings)
     {
       if (args.empty())
         throw InputError(std::string("No case file given.\n") + usage);
       if (args[0] == "--help" || args[0] == "-h")
         {
-          out << usage;
+          out << usage << '\n' << help;
+          return 0;
+        }
+      if (args[0] == "--version")
+        {
+          out << version();
           return 0;
         }
       if (args[0] == "--print-parameters")
@@ -71,7 +122,10 @@ namespace archdam
       if (mesh_only && resume)
         throw InputError("--mesh-only and --resume exclude each other.");
 
-      const Parameters      p = read_parameters(case_file, overrides);
+      const Parameters p = read_parameters(case_file, overrides);
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        for (const auto &w : p.warnings)
+          say(warnings, "archdam: warning: ", w);
       analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
       if (mesh_only)
         simulation.run_mesh_only();
@@ -80,15 +134,6 @@ namespace archdam
       return 0;
     }
 
-    /// Write one message line to @p err in a single write: under mpiexec the
-    /// standard output and error of rank 0 reach the terminal (or log file)
-    /// through separate channels, and a message written in pieces can be cut
-    /// by a line of the run's output.
-    void
-    say(std::ostream &err, const std::string &prefix, const std::string &message)
-    {
-      err << (prefix + message + '\n') << std::flush;
-    }
   } // namespace
 
   int
@@ -97,7 +142,7 @@ namespace archdam
     const bool talk = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     try
       {
-        return run(std::vector<std::string>(argv + 1, argv + argc), out);
+        return run(std::vector<std::string>(argv + 1, argv + argc), out, err);
       }
     catch (const InputError &e)
       {

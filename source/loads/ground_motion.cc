@@ -109,9 +109,9 @@ namespace archdam::loads
         prm.add_parameter(
           "Scale factor",
           c.scale,
-          "Factor applied to the record (dimensionless); a negative value "
-          "reverses its direction.",
-          dealii::Patterns::Double());
+          "Factor applied to the record (dimensionless), from -1000 to 1000; "
+          "a negative value reverses its direction.",
+          dealii::Patterns::Double(-1e3, 1e3));
         prm.enter_subsection("Processing");
         c.processing.add_parameters(prm);
         prm.leave_subsection();

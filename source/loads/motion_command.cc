@@ -1,3 +1,4 @@
+#include <archdam/base/case_file.h>
 #include <archdam/base/input_error.h>
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/design_spectrum.h>
@@ -664,8 +665,7 @@ Errors in the input give one message and exit code 1.
       check_allowed(o, {&component, &target_group, &output_group});
       expect_positional(o, 1, "the case file CASE.prm");
       const std::string path = o.positional[0];
-      if (!std::filesystem::is_regular_file(path))
-        throw InputError("Case file '" + path + "' does not exist.");
+      const CaseText    text = read_case_text(path);
 
       // Only the Ground motion section, the rest of the case is skipped.
       GroundMotionParameters   parameters;
@@ -673,7 +673,17 @@ Errors in the input give one message and exit code 1.
       prm.enter_subsection("Ground motion");
       parameters.add_parameters(prm);
       prm.leave_subsection();
-      prm.parse_input(path, "", true);
+      try
+        {
+          std::istringstream in(text.text);
+          prm.parse_input(in, path, "", true);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          throw InputError(text.relocate(info.str()));
+        }
       const GroundMotion motion(parameters,
                                 std::filesystem::path(path).parent_path().string());
 

@@ -102,7 +102,6 @@ namespace archdam::output
         *ghosted = *owned;
       }
 
-    const physics::solid::StressPostprocessor stress(materials);
     dealii::Vector<float> material(space.dof_handler.get_triangulation().n_active_cells());
     dealii::Vector<float> subdomain(material.size());
     for (const auto &cell : space.dof_handler.active_cell_iterators())
@@ -112,22 +111,27 @@ namespace archdam::output
           subdomain(cell->active_cell_index()) = cell->subdomain_id();
         }
 
-    DataOut<dim> data_out;
-    data_out.attach_dof_handler(space.dof_handler);
-    data_out.add_data_vector(u, names("displacement", "pressure"),
-                             DataOut<dim>::type_dof_data, interp);
-    data_out.add_data_vector(v, names("velocity", "pressure_rate"),
-                             DataOut<dim>::type_dof_data, interp);
-    data_out.add_data_vector(a, names("acceleration", "pressure_acceleration"),
-                             DataOut<dim>::type_dof_data, interp);
-    data_out.add_data_vector(u, stress);
-    data_out.add_data_vector(material, "material_id");
-    data_out.add_data_vector(subdomain, "subdomain");
-    data_out.build_patches(space.degree);
+    using Stress = physics::solid::StressPostprocessor;
+    const auto patches = [&](DataOut<dim> &data_out, const Stress &stress) {
+      data_out.attach_dof_handler(space.dof_handler);
+      data_out.add_data_vector(u, names("displacement", "pressure"),
+                               DataOut<dim>::type_dof_data, interp);
+      data_out.add_data_vector(v, names("velocity", "pressure_rate"),
+                               DataOut<dim>::type_dof_data, interp);
+      data_out.add_data_vector(a, names("acceleration", "pressure_acceleration"),
+                               DataOut<dim>::type_dof_data, interp);
+      data_out.add_data_vector(u, stress);
+      data_out.add_data_vector(material, "material_id");
+      data_out.add_data_vector(subdomain, "subdomain");
+      data_out.build_patches(space.degree);
+    };
 
     const unsigned int index = n_written++;
     if (vtu)
       {
+        const Stress stress(materials, Stress::Layout::tensor);
+        DataOut<dim> data_out;
+        patches(data_out, stress);
         const std::string pvtu =
           write_vtu_record(data_out, p.directory, "solution", index, space.comm);
         pvd_records.emplace_back(s.time, pvtu);
@@ -139,10 +143,17 @@ namespace archdam::output
       }
     if (hdf5)
       {
-        DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(true, true));
+        const Stress stress(materials, Stress::Layout::components);
+        DataOut<dim> data_out;
+        patches(data_out, stress);
+        // Points are not merged: the two faces of a joint, and the solid and
+        // water at their interface, share coordinates but not values.
+        DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(false, true));
         data_out.write_filtered_data(filter);
         const std::string h5 = "solution_" + Utilities::int_to_string(index, 5) + ".h5";
-        data_out.write_hdf5_parallel(filter, temporary_name(p.directory + "/" + h5), space.comm);
+        write_hdf5(temporary_name(p.directory + "/" + h5), [&] {
+          data_out.write_hdf5_parallel(filter, temporary_name(p.directory + "/" + h5), space.comm);
+        });
         on_rank_zero(space.comm, [&] { commit_temporary(p.directory + "/" + h5); });
         xdmf_entries.push_back(data_out.create_xdmf_entry(filter, h5, s.time, space.comm));
         data_out.write_xdmf_file(xdmf_entries, temporary_name(p.directory + "/solution.xdmf"),

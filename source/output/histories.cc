@@ -7,6 +7,7 @@
 #include <deal.II/base/hdf5.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <cerrno>
 #include <iomanip>
 #include <numeric>
 #include <sstream>
@@ -51,13 +52,14 @@ namespace archdam::output
     table.push_back(row);
     on_rank_zero(comm, [&] {
       if (csv.is_open())
-        append_line(csv, csv_line(row));
+        append_line(csv, file, csv_line(row));
       else
         {
+          errno = 0;
           csv.open(file);
           if (!csv)
-            throw InputError("Output: cannot write '" + file + "'.");
-          append_line(csv, csv_line(names) + csv_line(row));
+            throw InputError(cannot_write(file, errno));
+          append_line(csv, file, csv_line(names) + csv_line(row));
         }
     });
   }
@@ -89,9 +91,10 @@ namespace archdam::output
         for (const auto &row : table)
           out << csv_line(row);
       });
+      errno = 0;
       csv.open(file, std::ios::app);
       if (!csv)
-        throw InputError("Output: cannot write '" + file + "'.");
+        throw InputError(cannot_write(file, errno));
     });
   }
 
@@ -105,7 +108,7 @@ namespace archdam::output
       for (unsigned int r = 0; r < table.size(); ++r)
         for (unsigned int c = 0; c < names.size(); ++c)
           data(r, c) = table[r][c];
-      {
+      write_hdf5(temporary_name(hdf5_file), [&] {
         HDF5::File h5(temporary_name(hdf5_file), HDF5::File::FileAccessMode::create);
         auto dataset = h5.create_dataset<double>("histories", {table.size(), names.size()});
         dataset.write(data);
@@ -114,7 +117,7 @@ namespace archdam::output
                                      [](const std::string &a, const std::string &b) {
                                        return a + "," + b;
                                      }));
-      }
+      });
       commit_temporary(hdf5_file);
     });
   }

@@ -1,6 +1,8 @@
 #include <archdam/base/input_error.h>
 #include <archdam/output/monitors.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/utilities.h>
@@ -52,8 +54,8 @@ namespace archdam::output
           {
             char *end = nullptr;
             p.location[d] = std::strtod(coords[d].c_str(), &end);
-            if (end == coords[d].c_str() || *end != '\0')
-              throw bad("'" + coords[d] + "' is not a number");
+            if (end == coords[d].c_str() || *end != '\0' || !std::isfinite(p.location[d]))
+              throw bad("'" + coords[d] + "' is not a finite number");
           }
         for (const auto &q : result)
           if (q.name == p.name)

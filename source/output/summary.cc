@@ -2,8 +2,6 @@
 #include <archdam/output/atomic_file.h>
 #include <archdam/output/summary.h>
 
-#include <deal.II/base/utilities.h>
-
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -32,6 +30,24 @@ namespace archdam::output
               r += c;
           }
       return r + "\"";
+    }
+
+    /// The keys of a path: split at '/', except inside a unit in brackets
+    /// ("peaks/C.ax [m/s^2]/value" has three keys).
+    std::vector<std::string>
+    keys_of(const std::string &path)
+    {
+      std::vector<std::string> keys(1);
+      int                      depth = 0;
+      for (const char c : path)
+        {
+          depth += (c == '[') - (c == ']');
+          if (c == '/' && depth == 0)
+            keys.emplace_back();
+          else
+            keys.back() += c;
+        }
+      return keys;
     }
 
     void
@@ -87,7 +103,7 @@ namespace archdam::output
     for (const auto &[path, json] : entries)
       {
         Node *n = &root;
-        for (const auto &key : dealii::Utilities::split_string_list(path, '/'))
+        for (const auto &key : keys_of(path))
           n = &n->child(key);
         n->value = json;
       }

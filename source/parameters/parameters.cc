@@ -1,3 +1,4 @@
+#include <archdam/base/case_file.h>
 #include <archdam/base/input_error.h>
 #include <archdam/parameters/parameters.h>
 
@@ -7,7 +8,6 @@
 #include <boost/property_tree/ptree.hpp>
 #include <deal.II/base/utilities.h>
 
-#include <fstream>
 #include <functional>
 #include <sstream>
 
@@ -110,6 +110,21 @@ namespace archdam
       output::parse_monitor_points(p.monitors.points);
       if (p.analysis.stages.empty())
         throw InputError("Analysis/Stages: nothing to run.");
+      // The static loads are applied in the static stage only, and the
+      // dynamic stage starts from its state: without it they would be lost.
+      if (p.analysis.runs("dynamic") && !p.analysis.runs("static"))
+        {
+          const auto refuse = [](const std::string &load) {
+            throw InputError("Static loads/" + load +
+                             " = true, but Analysis/Stages has no static stage to apply it in "
+                             "(the dynamic stage would start unloaded at rest): add static to "
+                             "Stages, or set " + load + " = false.");
+          };
+          if (p.static_loads.gravity)
+            refuse("Gravity");
+          if (p.static_loads.hydrostatic && p.reservoir.model != "none")
+            refuse("Hydrostatic pressure");
+        }
       p.checkpoints.check();
     }
 
@@ -138,55 +153,31 @@ namespace archdam
       hex << std::hex << output::fnv1a(values);
       return hex.str();
     }
-
-    /// A case file may start from another one: `include other.prm` reads that
-    /// file's entries first (later entries override them). deal.II opens the
-    /// named file relative to the working directory; a case file means its own
-    /// folder, so relative names are rewritten to start there (the line count
-    /// stays the same, so messages keep their line numbers).
-    std::stringstream
-    with_includes_resolved(std::istream &in, const std::string &directory)
-    {
-      std::stringstream out;
-      std::string       line;
-      while (std::getline(in, line))
-        {
-          const auto first = line.find_first_not_of(" \t");
-          if (first != std::string::npos && line.compare(first, 8, "include ") == 0)
-            {
-              const auto        name_begin = line.find_first_not_of(" \t", first + 8);
-              const std::string name = name_begin == std::string::npos ? "" : line.substr(name_begin);
-              if (!name.empty() && name[0] != '/')
-                line = "include " + directory + "/" + name;
-            }
-          out << line << '\n';
-        }
-      return out;
-    }
   } // namespace
 
   Parameters
   read_parameters(const std::string &filename, const std::vector<std::string> &overrides)
   {
-    std::ifstream in(filename);
-    if (!in)
-      throw InputError("Cannot open the parameter file '" + filename + "'.");
-
+    // Includes resolved relative to each including file (base/case_file.h);
+    // the parser's line numbers are those of the joined text, said again of
+    // the file the user wrote.
+    const CaseText    text      = read_case_text(filename);
     const auto        slash     = filename.find_last_of('/');
     const std::string directory = slash == std::string::npos ? "." : filename.substr(0, slash);
-    std::stringstream text = with_includes_resolved(in, directory);
 
     Parameters       p;
     ParameterHandler prm;
     p.add_parameters(prm);
     try
       {
-        prm.parse_input(text, filename, "", false);
+        std::istringstream in(text.text);
+        prm.parse_input(in, filename, "", false);
       }
     catch (const ExceptionBase &e)
       {
-        throw InputError(user_message(e));
+        throw InputError(text.relocate(user_message(e)));
       }
+    p.warnings = text.warnings;
     for (const auto &o : overrides)
       apply_override(prm, o);
 

@@ -1,6 +1,9 @@
 #include <archdam/base/input_error.h>
 #include <archdam/time/newmark.h>
 
+#include <cmath>
+#include <sstream>
+
 namespace archdam::time
 {
   using namespace dealii;
@@ -35,6 +38,30 @@ namespace archdam::time
                        ", Beta2 = " + std::to_string(beta2) +
                        " is not unconditionally stable; need Beta1 >= 0.5 and "
                        "Beta2 >= (Beta1 + 0.5)^2 / 4 (numerics.md §2).");
+    if (end_time > 0)
+      n_steps(end_time);
+  }
+
+  unsigned int
+  NewmarkParameters::n_steps(const double end) const
+  {
+    const double steps = end / time_step;
+    const auto   both  = [&] {
+      std::ostringstream s;
+      s << "End time = " << end << " s with Time step = " << time_step << " s";
+      return s.str();
+    };
+    if (!(steps < max_steps + 0.5))
+      {
+        std::ostringstream s;
+        s << "Time integration: " << both() << " gives " << steps << " steps, more than the "
+          << max_steps << " one run can take; check the units of both.";
+        throw InputError(s.str());
+      }
+    if (!(steps >= 0.5))
+      throw InputError("Time integration: " + both() +
+                       " is shorter than one time step.");
+    return static_cast<unsigned int>(std::lround(steps));
   }
 
   NewmarkIntegrator::NewmarkIntegrator(const NewmarkParameters         &p,

@@ -36,7 +36,20 @@ namespace archdam::output
     return filename + ".tmp";
   }
 
-  /// Append @p line (ending in '\n') to @p file in one write and flush it.
+  /// Append @p line (ending in '\n') to @p file, named @p filename, in one
+  /// write and flush it.
   void
-  append_line(std::ofstream &file, const std::string &line);
+  append_line(std::ofstream &file, const std::string &filename, const std::string &line);
+
+  /// The message for a file that cannot be written: its name and the
+  /// system's reason, from @p error (an errno value, 0 if unknown) or, when
+  /// that is 0, from the free space of its folder.
+  std::string
+  cannot_write(const std::string &filename, int error);
+
+  /// Run @p write, which writes the HDF5 file @p filename, with the HDF5
+  /// library's own error stack kept quiet: a failure is one InputError,
+  /// cannot_write()'s message.
+  void
+  write_hdf5(const std::string &filename, const std::function<void()> &write);
 } // namespace archdam::output

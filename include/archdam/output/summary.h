@@ -20,7 +20,8 @@ namespace archdam::output
     set(const std::string &path, double value);
     void
     set(const std::string &path, const std::string &value);
-    /// Write as JSON; keys with '/' become nested objects.
+    /// Write as JSON; keys with '/' become nested objects (a '/' inside
+    /// brackets, as in a unit [m/s^2], belongs to the key).
     void
     write(const std::string &filename) const;
 

@@ -55,6 +55,11 @@ namespace archdam
     /// resolved against it.
     std::string base_directory;
 
+    /// What in the case file looks like a mistake but does not stop the run
+    /// (an entry set twice in one section): one sentence each, said before
+    /// the run starts.
+    std::vector<std::string> warnings;
+
     void
     add_parameters(dealii::ParameterHandler &prm);
   };

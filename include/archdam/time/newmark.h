@@ -25,6 +25,14 @@ namespace archdam::time
     /// beta1 >= 1/2 and beta2 >= (beta1 + 1/2)^2 / 4.
     void
     check() const;
+
+    /// The number of steps of Time step that reach @p end (s), rounded; an
+    /// InputError naming both values when that is less than one step or more
+    /// than max_steps (a unit mistake, and beyond what a step counter holds).
+    unsigned int
+    n_steps(double end) const;
+
+    static constexpr double max_steps = 1e7;
   };
 
   /// Displacement, velocity and acceleration at the current time.

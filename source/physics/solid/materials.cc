@@ -8,14 +8,18 @@ namespace archdam::physics::solid
   void
   ElasticMaterial::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Young's modulus", youngs_modulus, "Young's modulus E [Pa].",
-                      Patterns::Double(0., Patterns::Double::max_double_value));
+    // Bounds that no concrete or rock leaves, so that a unit mistake (MPa for
+    // Pa, t/m^3 for kg/m^3) or an empty value is named here, not met later as
+    // a singular matrix or a zero input energy.
+    prm.add_parameter("Young's modulus", youngs_modulus,
+                      "Young's modulus E [Pa], from 1e5 to 1e13.",
+                      Patterns::Double(1e5, 1e13));
     prm.add_parameter("Poisson's ratio", poissons_ratio, "Poisson's ratio nu [-].",
                       Patterns::Double(-0.999, 0.4999));
     prm.add_parameter("Density", density,
                       "Mass density [kg/m^3] (a unit weight of 24 kN/m^3 is "
-                      "24000/9.81 = 2446.5 kg/m^3).",
-                      Patterns::Double(0.));
+                      "24000/9.81 = 2446.5 kg/m^3), from 1 to 50000.",
+                      Patterns::Double(1., 5e4));
   }
 
   void

@@ -9,8 +9,10 @@ namespace archdam::physics::solid
 {
   using namespace dealii;
 
-  StressPostprocessor::StressPostprocessor(const MaterialParameters &materials)
+  StressPostprocessor::StressPostprocessor(const MaterialParameters &materials,
+                                           const Layout              layout)
     : materials(materials)
+    , layout(layout)
   {}
 
   void
@@ -42,6 +44,10 @@ namespace archdam::physics::solid
   StressPostprocessor::get_names() const
   {
     std::vector<std::string> names(dim * dim, "stress");
+    if (layout == Layout::components)
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          names[i * dim + j] = std::string("stress_") + "xyz"[i] + "xyz"[j];
     names.emplace_back("major_principal_stress");
     names.emplace_back("minor_principal_stress");
     return names;
@@ -51,7 +57,8 @@ namespace archdam::physics::solid
   StressPostprocessor::get_data_component_interpretation() const
   {
     std::vector<DataComponentInterpretation::DataComponentInterpretation> interp(
-      dim * dim, DataComponentInterpretation::component_is_part_of_tensor);
+      dim * dim, layout == Layout::tensor ? DataComponentInterpretation::component_is_part_of_tensor :
+                                           DataComponentInterpretation::component_is_scalar);
     interp.push_back(DataComponentInterpretation::component_is_scalar);
     interp.push_back(DataComponentInterpretation::component_is_scalar);
     return interp;

@@ -16,7 +16,18 @@ namespace archdam::physics::solid
   class StressPostprocessor : public dealii::DataPostprocessor<dim>
   {
   public:
-    explicit StressPostprocessor(const MaterialParameters &materials);
+    /// How the stress tensor is written: as one 3x3 tensor ("stress", for
+    /// VTU), or as its nine components, "stress_xx", "stress_xy", ... in the
+    /// tensor's row-major order, for formats that know no tensors (deal.II's
+    /// XDMF writer keeps only the first three components of a tensor).
+    enum class Layout
+    {
+      tensor,
+      components
+    };
+
+    explicit StressPostprocessor(const MaterialParameters &materials,
+                                 Layout                    layout = Layout::tensor);
 
     void
     evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
@@ -30,6 +41,7 @@ namespace archdam::physics::solid
 
   private:
     const MaterialParameters &materials;
+    const Layout              layout;
   };
 
   struct PeakStress
