@@ -123,7 +123,7 @@ namespace archdam::bench
   };
 
   /// Kbar = (1 + alpha beta1 dt) M + (beta beta1 dt + beta2 dt^2) K, built
-  /// exactly as time::NewmarkIntegrator builds it (numerics.md §2, eq. 2.4).
+  /// exactly as time::NewmarkIntegrator builds it (doc/theory/time-integration.md §3, eq. 2.4).
   inline void
   effective_matrix(const Model &m, SparseMatrix &kbar)
   {

@@ -1,5 +1,5 @@
 // Benchmark: the measurement behind the choice of direct solver
-// (performance.md). On the effective matrix Kbar = (1 + alpha beta1 dt) M +
+// (doc/performance.md §5). On the effective matrix Kbar = (1 + alpha beta1 dt) M +
 // (beta beta1 dt + beta2 dt^2) K of the box "dam on rock" model (bench_common.h,
 // built as time::NewmarkIntegrator builds it), time the factorization and one
 // solve of

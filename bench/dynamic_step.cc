@@ -1,5 +1,5 @@
 // Benchmark: cost of one dynamic step against one back-substitution with the
-// factor of Kbar (performance.md: target step / back-substitution <= 3), plus
+// factor of Kbar (doc/performance.md §2: target step / back-substitution <= 3), plus
 // the one-time set-up (assembly, factorization) and peak memory, all in ONE
 // process run on the box "dam on rock" model (bench_common.h).
 //

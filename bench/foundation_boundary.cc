@@ -1,5 +1,5 @@
 // Benchmark: per-step cost of the foundation's transmitting boundary
-// (numerics.md §5) against the plain step with a fixed boundary, in ONE
+// (doc/theory/foundation.md §5-§8) against the plain step with a fixed boundary, in ONE
 // process run on a rock box with free top and MTF (or viscous) bottom and
 // sides.
 //

@@ -1,4 +1,4 @@
-// Benchmark (issue: joints, performance.md): the cost of the frictional
+// Benchmark (issue: joints, doc/performance.md §2): the cost of the frictional
 // contraction joints on the same arch dam and motion, in one process run.
 //
 //   bench_joints [--rounds R] [--steps N] [--cells-over-height n]
@@ -8,7 +8,7 @@
 // Cases (each a whole Simulation::run(), dynamic stage only, from rest, no
 // field output; El Centro in x scaled by 2 so that joints open and slide):
 // - glued: the joints tied (the monolithic dam), Kbar factorized once;
-// - mixed: frictional contact by the mixed method (numerics.md §3) with the
+// - mixed: frictional contact by the mixed method (doc/theory/joints.md §3) with the
 //   predictor and corrector (two back-substitutions per step, C from
 //   multi-column solves);
 // - condensed: the mixed method condensed on the pairs (Kbar factorized with

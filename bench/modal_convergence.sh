@@ -1,6 +1,6 @@
 #!/bin/bash
 # Natural frequencies of the reference arch dam (Mesh/Source = arch dam,
-# default geometry) under mesh refinement (verification.md "Whole system"):
+# default geometry) under mesh refinement (doc/verification.md "Whole system"):
 # the modal stage on a sequence of meshes with the cells over the height,
 # across each block and through the thickness refined together, for Q1 and
 # Q2, on rigid rock (Foundation depth = 0) and on massless rock, with an empty
@@ -8,7 +8,7 @@
 # incompressible and compressible water. One line per run:
 #   foundation water degree height across thickness cells dofs seconds f1 ... f5 [Hz]
 # (seconds: wall time of the whole run on a shared machine, indicative only)
-# Tables and the extrapolation: doc/verification.md ("Modal frequencies of
+# Tables and the extrapolation: doc/verification.md ("Whole system: natural frequencies of
 # the arch dam"), results in bench/RESULTS.md.
 #
 # usage: bash bench/modal_convergence.sh [BUILD_DIR] [OUTPUT_DIR]

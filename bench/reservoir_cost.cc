@@ -1,4 +1,4 @@
-// Benchmark (issue: reservoir, performance.md): the one-time set-up and the
+// Benchmark (issue: reservoir, doc/performance.md §2): the one-time set-up and the
 // cost per dynamic step of the same arch dam with an empty reservoir and with
 // compressible water, in one process run (this machine is shared: the two
 // cases run back to back, several times alternating, and the medians are

@@ -1,6 +1,6 @@
 // ArchDam Gmsh example: three cantilever blocks of a straight gravity-arch
 // section on a rock block, with the reservoir upstream. Hexahedra only
-// (transfinite + recombine). Ids follow doc/user-guide.md (architecture.md §3):
+// (transfinite + recombine). Ids follow doc/user-guide.md (doc/theory/conventions.md §4-§5):
 // physical volumes = material ids, physical surfaces = boundary ids; solid
 // faces outside any physical surface are traction-free (id 0).
 //

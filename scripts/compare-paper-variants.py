@@ -24,7 +24,7 @@ Usage (from the project root):
 
 --mesh coarse runs every case on a coarse linear mesh (1 cell across a block
 and through the thickness, 4 over the height): a quick look, not the
-production mesh of performance.md. The results go to DIR/<case>[_coarse].
+production mesh of doc/performance.md §3. The results go to DIR/<case>[_coarse].
 """
 import argparse
 import csv

@@ -1,5 +1,5 @@
 // The default arch dam mesh (the paper case's reference dam) is a production
-// mesh (performance.md) and is well shaped (issue 3, must show 3).
+// mesh (doc/performance.md §3) and is well shaped (issue 3, must show 3).
 //
 // Checks, each against a reference computed here:
 //  - at least two cells through the dam thickness and across each block,

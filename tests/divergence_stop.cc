@@ -5,7 +5,7 @@
 //
 // 1. A real instability: a box dam on a massed foundation whose MTF runs at
 //    c_a dt / h = 2.8 (Q2 cells of 10 m, dt = 4 ms, c_p = 3.5 km/s), beyond
-//    the S <= 1 the formula needs (numerics.md §5), without its drift
+//    the S <= 1 the formula needs (doc/theory/foundation.md §6), without its drift
 //    stabilization and without damping. The scattered motion grows at the
 //    outer boundary until a displacement passes the model size: the stop
 //    must come before the end, name a node of the outer boundary (x = -40 or

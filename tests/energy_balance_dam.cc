@@ -1,4 +1,4 @@
-// The energy balance of the whole system (verification.md, "Whole system":
+// The energy balance of the whole system (doc/verification.md, "Energy balance":
 // input work = kinetic + strain + damping + radiated + contact, closed to a
 // stated fraction; analysis/energy_balance.h): the coarse arch dam of
 // foundation_arch_dam_water (4 blocks, 3 joints in frictional contact,

@@ -1,4 +1,4 @@
-// The energy balance of a dynamic run (verification.md, "Whole system";
+// The energy balance of a dynamic run (doc/verification.md, "Energy balance";
 // analysis/energy_balance.h) on an elastic box dam of two glued blocks fixed
 // at its base (rigid foundation, relative formulation).
 //

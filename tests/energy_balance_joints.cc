@@ -1,5 +1,5 @@
 // Contact dissipation in the energy balance (analysis/energy_balance.h;
-// verification.md, "Whole system" and "Joints"): the rigid-block case of
+// doc/verification.md, "Energy balance" and "Contraction joints"): the rigid-block case of
 // joint_sliding. A stiff block (1 m cube, rho = 2400 kg/m^3) on a joint over
 // a fixed base block, Coulomb friction mu = 0.2 without cohesion, settles
 // under its weight, then a rectangular ground pulse A g = 0.5 g for t0 =

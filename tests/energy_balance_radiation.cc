@@ -1,5 +1,5 @@
 // Radiated energy in the energy balance (analysis/energy_balance.h;
-// verification.md, "Whole system" and "Foundation radiation"): the shear
+// doc/verification.md, "Energy balance" and "Foundation radiation"): the shear
 // (SV) column of foundation_column (200 m of rock, Q2 cells of 5 m tied
 // plane by plane, so u = u(z, t)) on a massed foundation, total motion,
 // seismic input as a vertically propagating wave whose surface motion is the

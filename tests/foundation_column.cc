@@ -1,5 +1,5 @@
 // Radiation through the bottom of 1-D columns over a half-space
-// (verification.md, "Foundation radiation"; numerics.md §5): a shear (SV)
+// (doc/verification.md, "Foundation radiation"; doc/theory/foundation.md §4-§5): a shear (SV)
 // column and a compression (P) column, each a stack of Q2 hexahedra whose
 // DOFs are tied plane by plane, so that the motion is u(z, t) and the exact
 // solution is d'Alembert's.
@@ -11,7 +11,7 @@
 //    initial (incident) energy, below 2 % for the MTF and the viscous boundary.
 //    The fixed boundary must reflect nearly all of it (the test can fail).
 // B. Seismic input: the control motion g at the free surface. The surface
-//    must move as g(t - H/c) (the free field, numerics.md §5) within 5 % of
+//    must move as g(t - H/c) (the free field, doc/theory/foundation.md §4) within 5 % of
 //    the peak: the average acceleration rule lengthens periods by
 //    (omega dt)^2/12, 0.4 % at the pulse's upper frequency 2/T = 33 Hz with
 //    dt = 1 ms, which over the ~15 periods of travel shifts its phase by some

@@ -1,5 +1,5 @@
 // Bad foundation input ends with a message naming the problem (InputError):
-// - the MTF needs interior points j c_a dt inside the rock (numerics.md §5),
+// - the MTF needs interior points j c_a dt inside the rock (doc/theory/foundation.md §5),
 //   a time step too long for the rock's depth is reported;
 // - the viscous boundary without springs cannot carry the static stage.
 

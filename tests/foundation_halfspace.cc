@@ -1,4 +1,4 @@
-// A vertical surface load pulse on a 3-D half-space (verification.md,
+// A vertical surface load pulse on a 3-D half-space (doc/verification.md,
 // "Foundation radiation"): the receiver response of a small rock box with a
 // transmitting boundary must match that of a much larger box until the
 // reflection from the larger box's boundary reaches the receiver.

@@ -1,6 +1,6 @@
-// Long-run stability of the multi-transmitting boundary (verification.md,
+// Long-run stability of the multi-transmitting boundary (doc/verification.md,
 // "Foundation radiation": 20 000 steps with MTF and no input show no drift and
-// no growth; numerics.md §5: drift removed by the stabilized form, high
+// no growth; doc/theory/foundation.md §6: drift removed by the stabilized form, high
 // frequencies kept down by c_a dt / h <= 1).
 //
 // A 30 x 30 x 30 m rock box (2 x 2 x 2 Q2 cells, nodes 7.5 m apart, free top,

@@ -1,4 +1,4 @@
-// Helpers of the foundation radiation tests (verification.md, "Foundation
+// Helpers of the foundation radiation tests (doc/verification.md, "Foundation
 // radiation"): rock boxes and columns, lateral ties that make a column
 // one-dimensional, the elastic energy (also newmark_energy's), and smooth
 // pulses with their exact derivatives.

@@ -1,4 +1,4 @@
-// Water on a massed foundation (numerics.md §4 and §5): the prescribed outer
+// Water on a massed foundation (doc/theory/reservoir.md §5 and doc/theory/foundation.md §7): the prescribed outer
 // boundary of the rock drives the coupled dam-water system (paper eq. 3.2)
 // through the full columns of its M_c, D_c and K_c at the prescribed DOFs
 // (time::PrescribedDofs, reservoir::form_coupled_columns), the water's rows

@@ -1,6 +1,6 @@
-// The splitter and glued joints (issue "mesh", architecture.md §3;
-// verification.md "with the joints locked the joint model reproduces the
-// monolithic dam's response").
+// The splitter and glued joints (issue "mesh", doc/theory/conventions.md §6;
+// doc/verification.md: with the joints locked the joint model reproduces the
+// monolithic dam's response).
 //
 // A box dam of 4 blocks on rock is split into blocks (3 joints); with
 // `Contraction joints/Model = glued` the pairs are tied. Shown:

@@ -1,4 +1,4 @@
-// Self-weight of a column against the closed form (verification.md "Solid").
+// Self-weight of a column against the closed form (doc/verification.md "Solid").
 //
 // A concrete column [0, a] x [0, a] x [0, H] (the box model without rock: the
 // base z = 0 is clamped, every other face is free) under its own weight,

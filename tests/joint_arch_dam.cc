@@ -8,8 +8,8 @@
 //    glued dam, where the two faces of every joint are tied by constraints (a
 //    second method on the same mesh): crest displacement history to 1e-6 of
 //    its peak, no pair opens.
-// 2. The paper's joint law (mu = 0.7, c = 0, sigma_t = 0.5 MPa, numerics.md
-//    §3): every contact solve converges (static and dynamic); the node pairs
+// 2. The paper's joint law (mu = 0.7, c = 0, sigma_t = 0.5 MPa, doc/theory/joints.md
+//    §2): every contact solve converges (static and dynamic); the node pairs
 //    are the joint faces' nodes off the grouted edge on the rock,
 //    13 x (5 x 2 - 2) = 104; after each stage every pair satisfies the law,
 //    checked here from its forces and gap: no penetration and no opening of
@@ -55,7 +55,7 @@ namespace
   }
 
   /// Largest violation of the law over all pairs (test's own reading of
-  /// numerics.md §3 with c = 0 and zero residual strength): penetration or
+  /// doc/theory/joints.md §2 with c = 0 and zero residual strength): penetration or
   /// a loaded pair that is open [m]; tension and shear beyond friction,
   /// relative to the largest pair force.
   struct LawCheck

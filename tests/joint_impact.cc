@@ -1,4 +1,4 @@
-// Impact through a contraction joint (verification.md, joints; numerics.md §3).
+// Impact through a contraction joint (doc/verification.md, joints; doc/theory/joints.md §2).
 //
 // 1. Two equal elastic bars (length L, E, rho, nu = 0 so that the 3-D bar is
 //    exactly the 1-D one), bar 1 moving at v0 against bar 2 at rest, the
@@ -10,7 +10,7 @@
 // Solved with the mixed method (Q1, 40 cells per bar, dt = h / c). With the
 // average acceleration rule an exactly enforced contact chatters (the
 // interface velocity reverses in every step, and the energy grows); Beta1 =
-// 0.6 (numerics.md §2) damps it, and dissipates part of the high-frequency
+// 0.6 (doc/theory/time-integration.md §6) damps it, and dissipates part of the high-frequency
 // content of the discrete waves: the energy after the impact is reported and
 // must not exceed the energy before, nor lose more than 15 %. Tolerances: the discrete bar disperses the stress front
 // (Gibbs oscillation), so the interface stress is averaged over the middle
@@ -51,7 +51,7 @@ namespace
                                        std::set<types::boundary_id>{});
     time::NewmarkParameters np;
     np.time_step = dt;
-    np.beta1     = 0.6; // numerics.md §2: damps the contact chatter
+    np.beta1     = 0.6; // doc/theory/time-integration.md §6: damps the contact chatter
     np.beta2     = 0.3025;
     time::NewmarkIntegrator newmark(np, m.M, m.K, {0., 0.}, m.space->constraints);
     joints::JointParameters jp;

@@ -1,6 +1,6 @@
 // The contact law on one joint: tension cut-off, residual strength, an
 // initial gap that closes, and an oblique load slipping in its direction
-// (verification.md, joints; numerics.md §3): a 1 m cube (block 1, m = 2400
+// (doc/verification.md, joints; doc/theory/joints.md §2): a 1 m cube (block 1, m = 2400
 // kg) on a fixed base block (block 0) across one horizontal joint (mu = 0.5,
 // c = sigma_t = 1e4 Pa, residual values 0), loaded by a
 // uniform vertical body force F(t) (no gravity), mixed method with Kbar

@@ -1,5 +1,5 @@
-// A block sliding on a joint under base acceleration (verification.md,
-// joints; numerics.md §3): a stiff block (1 m cube) on a rigid base block
+// A block sliding on a joint under base acceleration (doc/verification.md,
+// joints; doc/theory/joints.md §2): a stiff block (1 m cube) on a rigid base block
 // (all its outer faces fixed: it moves with the ground), the horizontal joint
 // between them carrying the weight, then the ground acceleration a_g(t) in x
 // (relative formulation, load -a_g M iota_x), mixed method with Kbar.

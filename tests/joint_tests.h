@@ -1,6 +1,6 @@
 // Small models for the joint tests: cantilever blocks made of box cells along
 // one axis, split into contraction joints by the splitter, with the FE space,
-// M, K and the node pairs ready (numerics.md §3).
+// M, K and the node pairs ready (doc/theory/joints.md §1).
 #pragma once
 
 #include <archdam/fe/fe_space.h>

@@ -1,4 +1,4 @@
-// Natural frequencies of the reference arch dam (verification.md "Whole
+// Natural frequencies of the reference arch dam (doc/verification.md "Whole
 // system"; issue 8, must-show 4): the modal stage (SLEPc, shift-and-invert)
 // on the parametric dam of doc/arch-dam-geometry.md, default geometry, Q2.
 //

@@ -1,4 +1,4 @@
-// Verification: the modal stage (numerics.md §6, step 2) on a uniform square
+// Verification: the modal stage (doc/theory/loading-sequence.md §2) on a uniform square
 // concrete cantilever 1 m x 1 m x 10 m (clamped base, Q2, nu = 0), on two
 // meshes, against independent references:
 //  - bending modes 1-2 (x and y, degenerate) and 3-4 against the first two

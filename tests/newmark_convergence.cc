@@ -1,16 +1,16 @@
-// Generalized Newmark scheme (numerics.md §2) on a small FE cantilever, against
+// Generalized Newmark scheme (doc/theory/time-integration.md §6) on a small FE cantilever, against
 // the exact solution of the semi-discrete system M u'' + K u = 0, obtained
 // independently by modal superposition from a dense generalized eigensolver
 // (LAPACK): u(t) = sum_i phi_i (q_i cos w_i t + p_i / w_i sin w_i t).
 //
-// Shows (verification.md, time integration):
+// Shows (doc/verification.md, time integration):
 // 1. with Beta1 = 1/2, Beta2 = 1/4 the error at a fixed time falls by 4 when
 //    dt halves (second order);
 // 2. the period elongation of the average acceleration rule matches its known
 //    formula T_num / T = (w dt / 2) / atan(w dt / 2);
 // 3. with Beta1 = 0.6 (numerical damping) the scheme is only first order;
 // 4. Rayleigh damping derived from a damping ratio zeta at two frequencies
-//    (numerics.md §1) gives each of those modes the decay of zeta: the modal
+//    (doc/theory/solid.md §4) gives each of those modes the decay of zeta: the modal
 //    damping ratio of M u'' + (alpha M + beta K) u' + K u = 0 is
 //    alpha / (2 w) + beta w / 2, measured here by the logarithmic decrement.
 

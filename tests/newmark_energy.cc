@@ -1,7 +1,7 @@
-// Energy of the generalized Newmark scheme (numerics.md §2) on an elastic
-// body (verification.md, time integration: "for an undamped linear elastic
+// Energy of the generalized Newmark scheme (doc/theory/time-integration.md §7) on an elastic
+// body (doc/verification.md, time integration: for an undamped linear elastic
 // body the total energy stays constant to round-off with the average
-// acceleration rule").
+// acceleration rule).
 //
 // The reference is the discrete energy identity of the average acceleration
 // rule, derived independently of the code: with u_{n+1} - u_n = dt vbar and

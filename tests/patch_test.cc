@@ -1,4 +1,4 @@
-// Patch test of the solid (numerics.md §1, verification.md "Solid"): a field of
+// Patch test of the solid (doc/theory/solid.md §1, doc/verification.md "Solid"): a field of
 // constant strain is reproduced exactly on a distorted mesh.
 //
 // The box model without rock (a concrete block [0, L] x [0, W] x [0, H] in

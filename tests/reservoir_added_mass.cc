@@ -1,4 +1,4 @@
-// Verification (numerics.md §4, verification.md "Reservoir"): the water
+// Verification (doc/theory/reservoir.md §6-§8, doc/verification.md "Reservoir"): the water
 // models without waves on a vertical dam face, against closed forms and the
 // exact series:
 //  - hydrostatic load: resultant rho_w g h^2 W / 2 and moment about the base

@@ -1,6 +1,6 @@
 // The fundamental frequency of a flexible dam with an empty reservoir, with
 // compressible water, with incompressible water and with Westergaard added
-// mass (numerics.md §4 and §6; verification.md "Modal"), side by side.
+// mass (doc/theory/reservoir.md and doc/theory/loading-sequence.md §2; doc/verification.md "Reservoir"), side by side.
 //
 // Model. A concrete wall 50 m high, 5 m thick (x) and 10 m wide (y), fixed at
 // its base, Q2 with 8 cells over the height, in the channel of

@@ -1,5 +1,5 @@
 // Shared by the reservoir tests: the model of a straight channel of water in
-// front of a vertical dam face (the rigid-dam problem of verification.md,
+// front of a vertical dam face (the rigid-dam problem of doc/verification.md,
 // "Reservoir"), its exact series solutions, and point evaluation of the FE
 // pressure. Nothing here calls the reservoir module: the references are
 // independent of the code under test.
@@ -123,7 +123,7 @@ namespace archdam::testing
    *    / (kappa + i omega/c).
    * c = infinity gives the incompressible water (with a rigid end wall at L).
    * The sign: the dam accelerating away from the water gives suction; the
-   * textbook formula (verification.md) is for the opposite direction.
+   * textbook formula (doc/theory/reservoir.md §10) is for the opposite direction.
    */
   inline std::vector<complex>
   face_pressure(const Channel &ch, const double omega, const std::vector<double> &z,

@@ -1,4 +1,4 @@
-// Verification (verification.md, "Reservoir"): the hydrodynamic pressure on a
+// Verification (doc/verification.md, "Reservoir"): the hydrodynamic pressure on a
 // rigid vertical dam face driven by a harmonic ground acceleration, from the
 // project's water operators G, H, Q, S (physics/reservoir), against the
 // separation-of-variables series of tests/reservoir_reference.h.
@@ -15,7 +15,7 @@
 //  - the truncated channel: the same boundary-value problem (Sommerfeld
 //    condition at s = L) solved exactly mode by mode; the FE must converge to
 //    it under refinement, at every frequency 0 ... 3 omega_1 and every height;
-//  - the infinite channel (Chopra's series, verification.md), the physical
+//  - the infinite channel (Chopra's series, doc/theory/reservoir.md §10), the physical
 //    reference: below 0.8 omega_1 the truncation at 3H changes the face
 //    pressure by about e^{-2 kappa_1 L} (0.35 % at 0.8 omega_1, less below),
 //    so the FE must match the infinite series there within 0.5 %; above the first resonance the Sommerfeld

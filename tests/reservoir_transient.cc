@@ -1,4 +1,4 @@
-// Verification (verification.md, "Reservoir"): a transient ground motion in
+// Verification (doc/verification.md, "Reservoir"): a transient ground motion in
 // the time domain against the frequency-domain solution, and the effect of
 // the upstream truncation (radiation condition).
 //

@@ -1,4 +1,4 @@
-// The splitter on the arch dam with its reservoir (architecture.md §3, issue
+// The splitter on the arch dam with its reservoir (doc/theory/conventions.md §6, issue
 // "mesh"): from the conforming mesh of dam, rock and water,
 //  - the 13 joints come apart as pairs of coincident faces (ids 100 + 2k on
 //    block k, 101 + 2k on block k + 1) that pair 1:1, and the joint edge

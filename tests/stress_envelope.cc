@@ -1,5 +1,5 @@
 // The stress envelope on the dam faces (output/stress_envelope.h,
-// numerics.md §7) against a closed form and against a second method.
+// doc/theory/results.md §3) against a closed form and against a second method.
 //
 // A. Static state kept through the dynamic stage. A concrete column
 //    [0, a] x [0, a] x [0, H] of two glued blocks (the joint is the plane

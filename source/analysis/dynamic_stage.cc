@@ -29,7 +29,7 @@ namespace archdam::analysis
   } // namespace
 
   /**
-   * The energy balance of the dynamic stage (numerics.md §7) on the model's
+   * The energy balance of the dynamic stage (doc/theory/results.md §7) on the model's
    * own operators: the solid's M, K and Rayleigh damping, the water's
    * operators, and the foundation's boundary; from the current (static) state.
    */
@@ -56,7 +56,7 @@ namespace archdam::analysis
   }
 
   /**
-   * Dynamic stage (numerics.md §2 and §6, step 3): the generalized Newmark
+   * Dynamic stage (doc/theory/time-integration.md §2 and doc/theory/loading-sequence.md §3): the generalized Newmark
    * scheme from the static state at rest, under F(t) = F_static - M iota a_g(t),
    * recording the monitors and the stress envelope on the dam faces every
    * step and the fields every few steps.
@@ -86,7 +86,7 @@ namespace archdam::analysis
           physics::reservoir::form_coupled_system(*fluid_operators, p.reservoir.density,
                                                   p.time_integration.beta2, dt, mass_matrix,
                                                   stiffness_matrix, rayleigh, *coupled);
-          // A prescribed outer boundary drives the water too (numerics.md §5).
+          // A prescribed outer boundary drives the water too (doc/theory/foundation.md §7).
           if (auto *boundary = massed_foundation ? massed_foundation->prescribed_dofs() : nullptr)
             physics::reservoir::form_coupled_columns(*fe_space, interface_pairs,
                                                      p.reservoir.density,

@@ -94,7 +94,7 @@ namespace archdam::analysis
   void
   EnergyBalance::damping_force(const Vector &v, Vector &out) const
   {
-    // D = alpha M + beta K (numerics.md §1); for the coupled system this is
+    // D = alpha M + beta K (doc/theory/solid.md §4); for the coupled system this is
     // the solid's block of D_c, the water's radiation being counted apart.
     full_product(*m.mass, mass_columns(), v, out);
     out *= m.rayleigh.first;
@@ -186,7 +186,7 @@ namespace archdam::analysis
     sums.damping += 0.5 * (du * damping_prev + du * tmp);
     damping_prev = tmp;
 
-    // Relative formulation: F = -sum_d a_g,d M iota_d (numerics.md §5), and
+    // Relative formulation: F = -sum_d a_g,d M iota_d (doc/theory/foundation.md §2), and
     // the ground's own motion, integrated by the same Newmark rule, for the
     // water.
     Tensor<1, dim> dug;
@@ -201,7 +201,7 @@ namespace archdam::analysis
 
     if (m.viscous)
       {
-        // Viscous boundary (numerics.md §5): the free-field forces put the
+        // Viscous boundary (doc/theory/foundation.md §8): the free-field forces put the
         // wave in, the dashpots take c (v_n + v_{n+1}) / 2 . du out.
         tmp = 0.;
         m.viscous->add_free_field_load(s.time, tmp);
@@ -262,7 +262,7 @@ namespace archdam::analysis
 
     if (joints)
       {
-        // The joints absorb f . dw (the load on the dam is -B^T f, numerics.md §3).
+        // The joints absorb f . dw (the load on the dam is -B^T f, doc/theory/joints.md §1).
         for (unsigned int k = 0; k < f_prev.size(); ++k)
           {
             const double work_k =

@@ -32,7 +32,7 @@ namespace archdam::analysis
   }
 
   /**
-   * Static stage with the joints in frictional contact (numerics.md §3, last
+   * Static stage with the joints in frictional contact (doc/theory/joints.md §8, first
    * line): the mixed method with K in place of Kbar, the whole static load in
    * one step from the unloaded, closed joints; gravity is carried through the
    * closed joints.

@@ -8,7 +8,7 @@ namespace archdam::analysis
   using namespace dealii;
 
   /**
-   * Modal stage (numerics.md §6, step 2): the lowest natural frequencies and
+   * Modal stage (doc/theory/loading-sequence.md §2): the lowest natural frequencies and
    * mode shapes of the model as built (foundation and reservoir models
    * included through M and K), with each mode's effective modal mass in the
    * three directions, Gamma_d^2 for the mass-normalized shape, as a fraction

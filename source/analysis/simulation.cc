@@ -104,7 +104,7 @@ namespace archdam::analysis
   Simulation::setup_model()
   {
     TimerOutput::Scope t(timer, "setup");
-    // The water cells stay unless the reservoir is empty (numerics.md §4);
+    // The water cells stay unless the reservoir is empty (doc/theory/reservoir.md §7);
     // they carry the pressure only in the compressible and incompressible
     // models.
     namespace reservoir = physics::reservoir;
@@ -163,7 +163,7 @@ namespace archdam::analysis
                                             interface_pairs, *fluid_operators);
       }
 
-    // Static load: self-weight b = -g e_z (numerics.md §6).
+    // Static load: self-weight b = -g e_z (doc/theory/loading-sequence.md §1).
     Tensor<1, dim> gravity;
     gravity[dim - 1] = p.static_loads.gravity ? -p.static_loads.g : 0.;
     physics::solid::assemble_inertia_load(*fe_space, p.materials,
@@ -174,7 +174,7 @@ namespace archdam::analysis
     if (p.static_loads.hydrostatic && water != reservoir::Model::none)
       reservoir::add_hydrostatic_load(*fe_space, p.reservoir.density, p.static_loads.g, level,
                                       static_load);
-    // Influence loads M iota_d of the relative formulation (numerics.md §5).
+    // Influence loads M iota_d of the relative formulation (doc/theory/foundation.md §2).
     for (unsigned int d = 0; d < dim; ++d)
       physics::solid::assemble_inertia_load(*fe_space, p.materials, inertia,
                                             Point<dim>::unit_vector(d), influence_load[d]);
@@ -283,7 +283,7 @@ namespace archdam::analysis
   Simulation::setup_massed_foundation(const physics::solid::InertiaOf inertia)
   {
     // The free surface of the half-space is the top of the rock, its bottom
-    // the model's (numerics.md §5).
+    // the model's (doc/theory/foundation.md §4).
     double z_top = -std::numeric_limits<double>::max(), z_bottom = -z_top;
     for (const auto &cell : triangulation.active_cell_iterators())
       for (const auto v : cell->vertex_indices())

@@ -9,7 +9,7 @@ namespace archdam::analysis
   using namespace dealii;
 
   /**
-   * Static stage (numerics.md §6, step 1): K u = F_static with the fixed
+   * Static stage (doc/theory/loading-sequence.md §1): K u = F_static with the fixed
    * boundary, solved with a Cholesky factorization of K. The dynamic stage
    * starts from this state at rest.
    */

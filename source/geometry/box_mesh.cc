@@ -117,7 +117,7 @@ namespace archdam::geometry
         else
           {
             // Blocks are numbered left to right looking downstream (+x), i.e.
-            // from +y to -y (architecture.md §3).
+            // from +y to -y (doc/theory/conventions.md §4).
             const auto k = p.n_blocks - 1 -
                            std::min<unsigned int>(
                              static_cast<unsigned int>(c[1] / p.width * p.n_blocks),

@@ -7,7 +7,7 @@ namespace archdam::joints
   PairStrength
   strength_of(const JointLaw &law, const double area, const bool damaged)
   {
-    // numerics.md §3: sigma_t and c drop to their residual values once a pair
+    // doc/theory/joints.md §2: sigma_t and c drop to their residual values once a pair
     // has opened or slipped.
     return {law.friction_coefficient,
             area * (damaged ? law.residual_cohesion : law.cohesion),

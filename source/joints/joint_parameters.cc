@@ -17,7 +17,7 @@ namespace archdam::joints
                       "How the contraction joints between dam blocks behave: glued = "
                       "the two faces of every joint are tied together (the monolithic "
                       "dam); frictional contact = the joints open, close and slide "
-                      "(Mohr-Coulomb with tension cut-off, numerics.md §3).",
+                      "(Mohr-Coulomb with tension cut-off, doc/theory/joints.md §2).",
                       Patterns::Selection("glued|frictional contact"));
     prm.add_parameter("Solver", solver,
                       "Frictional contact solver: mixed = the mixed method (the "
@@ -33,8 +33,8 @@ namespace archdam::joints
                       "(the paper's sparse approximation).",
                       Patterns::Selection("all joints|neighbouring joints"));
     prm.add_parameter("Mixed method solves", mixed_solves,
-                      "How a solve of the mixed method reaches the pairs (numerics.md "
-                      "§3): condensed on the pairs = the stage's matrix factorized by "
+                      "How a solve of the mixed method reaches the pairs (doc/theory/joints.md "
+                      "§4): condensed on the pairs = the stage's matrix factorized by "
                       "MUMPS with the pairs' unknowns eliminated last, C from the Schur "
                       "complement of those unknowns, and one back-substitution per solve "
                       "split around the contact problem (forward elimination, contact "
@@ -79,8 +79,8 @@ namespace archdam::joints
                       Patterns::Double(0.));
     prm.add_parameter("Maximum iterations", max_iterations,
                       "Contact iterations allowed in one solve: active-set "
-                      "iterations plus projected Gauss-Seidel sweeps (numerics.md "
-                      "§3; a sweep costs about as much as one matrix-vector product "
+                      "iterations plus projected Gauss-Seidel sweeps (doc/theory/joints.md "
+                      "§6; a sweep costs about as much as one matrix-vector product "
                       "with the flexibility matrix).",
                       Patterns::Integer(1));
     prm.add_parameter("Penalty factor", penalty_factor,

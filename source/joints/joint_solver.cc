@@ -112,7 +112,7 @@ namespace archdam::joints
     const double t          = std::hypot(f[1], f[2]);
     const double tau        = strength_i.shear_capacity(f[0]);
     // A pair that opens or slips loses its intact strength at once, also
-    // within the iteration (numerics.md §3): strength only decreases, so the
+    // within the iteration (doc/theory/joints.md §2): strength only decreases, so the
     // iteration cannot cycle between a broken and an intact pair.
     const auto separate = [&] {
       state[i]   = PairState::separation;

@@ -123,7 +123,7 @@ namespace archdam::joints
         B_interface[j].emplace_back(static_cast<unsigned int>(g), v);
       });
 
-    // G = S^{-1} B^T, C = B G (numerics.md §3: C = B A^{-1} B^T, since the
+    // G = S^{-1} B^T, C = B G (doc/theory/joints.md §4: C = B A^{-1} B^T, since the
     // load B^T f lies on the interface).
     const unsigned int k = gamma.size();
     G.reinit(k, m);
@@ -155,7 +155,7 @@ namespace archdam::joints
   MixedJointSolver::solve_with_fixed_states()
   {
     // The law with the states fixed and the slip directions linearized is
-    // linear in the forces of the closed pairs (numerics.md §3): stick:
+    // linear in the forces of the closed pairs (doc/theory/joints.md §6): stick:
     // w = w_target in all three directions; slip: w_xi = -delta_0 and the
     // semi-smooth Newton step of f_t = tau(f_xi) q / |q|, q = f_t + r dw_t
     // (Alart-Curnier; Hueber, Stadler and Wohlmuth 2008): about the last
@@ -289,7 +289,7 @@ namespace archdam::joints
   {
     // Pair by pair, component by component: the normal force towards closing
     // the gap, then the tangential force towards no slip, each projected on
-    // the law (numerics.md §3) and scaled by the pair's own flexibility
+    // the law (doc/theory/joints.md §2) and scaled by the pair's own flexibility
     // (a projected coordinate / block-gradient step: for fixed friction
     // bounds this is descent on a convex quadratic, so it converges). A pair
     // whose trial force exceeds its strength opens or slips and is damaged.

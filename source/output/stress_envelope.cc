@@ -127,7 +127,7 @@ namespace archdam::output
             for (unsigned int i = 0; i < values.size(); ++i)
               unit_gradient[component[i]] += values[i] * gradients[k][i];
             Entry &e = entries[face.first_entry + k];
-            // Hooke's law and the principal stresses (numerics.md §1).
+            // Hooke's law and the principal stresses (doc/theory/solid.md §6).
             const auto [s1, s3] = physics::solid::principal_stresses(face.material.stress(
               symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k])));
             if (!started || s1 > e.max_s1)

@@ -37,7 +37,7 @@ namespace archdam::time
       throw InputError("Time integration: Beta1 = " + std::to_string(beta1) +
                        ", Beta2 = " + std::to_string(beta2) +
                        " is not unconditionally stable; need Beta1 >= 0.5 and "
-                       "Beta2 >= (Beta1 + 0.5)^2 / 4 (numerics.md §2).");
+                       "Beta2 >= (Beta1 + 0.5)^2 / 4 (doc/theory/time-integration.md §6).");
     if (end_time > 0)
       n_steps(end_time);
   }

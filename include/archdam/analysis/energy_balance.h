@@ -16,7 +16,7 @@
 
 namespace archdam::analysis
 {
-  /// The terms of the energy balance of a dynamic stage [J] (numerics.md §7).
+  /// The terms of the energy balance of a dynamic stage [J] (doc/theory/results.md §7).
   struct EnergyTerms
   {
     /// Work put into the model: the ground motion's inertia loads (relative
@@ -60,7 +60,7 @@ namespace archdam::analysis
   };
 
   /**
-   * The energy balance of the dynamic stage (numerics.md §2 and §7): every step adds
+   * The energy balance of the dynamic stage (doc/theory/time-integration.md §7 and doc/theory/results.md §7): every step adds
    * the work of each force group over the step, with the trapezoidal rule in
    * the displacement, W += (x_{n+1} - x_n) . (F_n + F_{n+1}) / 2, the rule
    * the Newmark scheme itself applies (with Beta1 = 1/2, Beta2 = 1/4,

@@ -11,7 +11,7 @@
 
 namespace archdam::analysis
 {
-  /// The `Modal analysis` subsection (numerics.md §6, step 2).
+  /// The `Modal analysis` subsection (doc/theory/loading-sequence.md §2).
   struct ModalParameters
   {
     unsigned int n_modes          = 10;
@@ -33,7 +33,7 @@ namespace archdam::analysis
 
   /**
    * The lowest natural modes of the undamped system K phi = omega^2 M phi
-   * (numerics.md §6, step 2), by SLEPc's Krylov-Schur method with the
+   * (doc/theory/loading-sequence.md §2), by SLEPc's Krylov-Schur method with the
    * shift-and-invert transformation about 0: the largest eigenvalues of
    * K^{-1} M, with K factorized once by MUMPS (Cholesky).
    *
@@ -53,7 +53,7 @@ namespace archdam::analysis
 
   /**
    * The lowest natural modes of the dam coupled with water that carries a
-   * pressure (compressible or incompressible model, numerics.md §4, paper
+   * pressure (compressible or incompressible model, doc/theory/reservoir.md §9, paper
    * eq. 3.1 without the radiation term H: the truncation boundary and the
    * bottom reflect, so the modes are undamped and omega^2 real). With
    * u, p ~ e^{i omega t} the solid's M u_tt + K u - (1/rho_w) S^T p = 0 and

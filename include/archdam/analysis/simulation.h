@@ -29,7 +29,7 @@
 namespace archdam::analysis
 {
   /**
-   * One case from start to end (architecture.md §1): the model is built once
+   * One case from start to end (doc/theory/conventions.md §1): the model is built once
    * (mesh, DOFs, M, K, loads), then the stages run in order, static (gravity),
    * modal (natural modes) and dynamic (ground motion from the static state), each writing its
    * results; summary.json is written at the end.
@@ -221,7 +221,7 @@ namespace archdam::analysis
     void
     summarize_joints();
 
-    /// Massed foundation (numerics.md §5): free field from the ground motion
+    /// Massed foundation (doc/theory/foundation.md §3-§4): free field from the ground motion
     /// and the transmitting boundary.
     void
     setup_massed_foundation(physics::solid::InertiaOf inertia);

@@ -27,7 +27,7 @@ namespace archdam::fe
   };
 
   /**
-   * The discrete space of the whole model (style.md, step-46): one DoFHandler
+   * The discrete space of the whole model (doc/style.md §1, step-46): one DoFHandler
    * over an hp::FECollection whose element 0 carries the displacement u
    * (dim components, FE_Q) in solid cells and element 1 the hydrodynamic
    * pressure p (one component) in water cells; the other field is FE_Nothing.

@@ -16,7 +16,7 @@ namespace archdam::geometry
    * blocks, water 202 m above the base. doc/arch-dam-geometry.md gives every
    * formula and the reason for every default.
    *
-   * Axes (architecture.md §3): x downstream, y along the dam axis, z up;
+   * Axes (doc/theory/conventions.md §3): x downstream, y along the dam axis, z up;
    * z = 0 at the dam base (the lowest point of the crown cantilever), x = 0 at
    * the heel of the crown cantilever (its upstream face at z = 0), y = 0 in the
    * crown plane.

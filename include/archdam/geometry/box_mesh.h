@@ -32,7 +32,7 @@ namespace archdam::geometry
     add_parameters(dealii::ParameterHandler &prm);
   };
 
-  /// Fill @p tria with the box model; ids as in architecture.md §3.
+  /// Fill @p tria with the box model; ids as in doc/theory/conventions.md §4-§5.
   void
   generate_box(const BoxParameters &p, dealii::Triangulation<dim> &tria);
 } // namespace archdam::geometry

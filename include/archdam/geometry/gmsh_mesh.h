@@ -11,7 +11,7 @@ namespace archdam::geometry
   /**
    * Read a Gmsh mesh (`Mesh/Source = gmsh`): an ASCII .msh file of format 2.x
    * or 4.1 holding hexahedra. Physical volume ids become material ids and
-   * physical surface ids boundary ids (architecture.md §3; doc/user-guide.md
+   * physical surface ids boundary ids (doc/theory/conventions.md §4-§5; doc/user-guide.md
    * lists them); a face outside any physical surface gets id 0, a cell outside
    * any physical volume material id 0 (rejected later by check_model_ids()).
    *

@@ -3,7 +3,7 @@
 #include <deal.II/base/types.h>
 
 /**
- * Material and boundary ids shared by every mesh source (architecture.md §3).
+ * Material and boundary ids shared by every mesh source (doc/theory/conventions.md §4-§6).
  */
 namespace archdam::ids
 {

@@ -30,7 +30,7 @@ namespace archdam::geometry
   check_cell_shapes(const dealii::Triangulation<dim> &conforming);
 
   /**
-   * The ids of a conforming mesh before splitting (architecture.md §3,
+   * The ids of a conforming mesh before splitting (doc/theory/conventions.md §4-§5,
    * doc/user-guide.md "Ids"), for every mesh source. Each rule broken is an
    * InputError naming the place:
    *  - material ids are 1 (rock), 2 (water) or 10 + k (dam block k, k < 90);

@@ -7,7 +7,7 @@
 namespace archdam::geometry
 {
   /**
-   * The splitter (architecture.md §3), shared by every mesh source: from a
+   * The splitter (doc/theory/conventions.md §6), shared by every mesh source: from a
    * conforming coarse mesh with material ids (1 rock, 2 water, 10 + k dam
    * block k) and boundary ids 0-5, build the model mesh in which
    *  - the vertices of faces between dam blocks k and k + 1 are duplicated,

@@ -7,7 +7,7 @@
 
 namespace archdam::joints
 {
-  /// The states of a node pair (numerics.md §3, the paper's Table 1).
+  /// The states of a node pair (doc/theory/joints.md §2, the paper's Table 1).
   enum class PairState : unsigned char
   {
     separation = 0,

@@ -10,7 +10,7 @@
 
 namespace archdam::joints
 {
-  /// The two coincident faces of one joint face (numerics.md §3): side 1 on
+  /// The two coincident faces of one joint face (doc/theory/joints.md §1): side 1 on
   /// block k (id 100 + 2k), side 2 on block k + 1 (id 101 + 2k).
   struct JointFacePair
   {

@@ -11,7 +11,7 @@
 namespace archdam::joints
 {
   /**
-   * What the joints leave behind (numerics.md §7), written by rank 0 into the
+   * What the joints leave behind (doc/theory/results.md §2), written by rank 0 into the
    * output directory:
    *  - joints_<stage>.pvd with joints_<stage>_NNNN.vtu: every node pair as a
    *    point with its joint, opening (gap, m), slip (m), normal and shear

@@ -6,7 +6,7 @@
 
 namespace archdam::joints
 {
-  /// The Mohr-Coulomb law with tension cut-off of one joint (numerics.md §3,
+  /// The Mohr-Coulomb law with tension cut-off of one joint (doc/theory/joints.md §2,
   /// the paper's Table 1). Stresses in Pa, the gap in m.
   struct JointLaw
   {
@@ -18,7 +18,7 @@ namespace archdam::joints
     double initial_gap               = 0.;
   };
 
-  /// The `Contraction joints` subsection (numerics.md §3).
+  /// The `Contraction joints` subsection (doc/theory/joints.md).
   struct JointParameters
   {
     /// glued | frictional contact

@@ -26,7 +26,7 @@ namespace archdam::joints
   };
 
   /**
-   * One implicit solve with joint forces (numerics.md §3):
+   * One implicit solve with joint forces (doc/theory/joints.md §3):
    *   A x = r - B^T f,   w = w_base + h B x,   the law at every pair,
    * where f (3 per pair, local frame) is the force on side 1 (-f on side 2).
    * The dynamic step has A = Kbar, x = da, w_base = B u^p, h = beta2 dt^2;
@@ -45,7 +45,7 @@ namespace archdam::joints
     solve(const Vector &r, const std::vector<double> &w_base, Vector &x) = 0;
 
     /// Commit the solved step: pairs that opened or slipped lose their
-    /// intact strength for good (numerics.md §3).
+    /// intact strength for good (doc/theory/joints.md §2).
     void
     accept();
 
@@ -95,7 +95,7 @@ namespace archdam::joints
     relative_change(const std::vector<double> &before) const;
 
     /**
-     * The active-set update of pair i (numerics.md §3) from its force (for
+     * The active-set update of pair i (doc/theory/joints.md §6) from its force (for
      * the current state) and relative displacement: separation -> stick when
      * the gap closes by more than Gap tolerance; stick/slip -> separation
      * when f_xi exceeds sigma_t A (or the shear capacity becomes negative);
@@ -132,7 +132,7 @@ namespace archdam::joints
   };
 
   /**
-   * The mixed method (numerics.md §3, paper eq. 2.5-2.8): A is factorized
+   * The mixed method (doc/theory/joints.md §3-§6, paper eq. 2.5-2.8): A is factorized
    * once; the flexibility matrix C = B A^{-1} B^T on the pair DOFs is built
    * once; each solve is a predictor (one back-substitution), the contact
    * problem on the pairs alone, and a corrector (a second back-substitution,
@@ -232,7 +232,7 @@ namespace archdam::joints
   augmentation_of(const std::vector<double> &C, double h);
 
   /**
-   * The monolithic reference (numerics.md §3): the same law enforced on the
+   * The monolithic reference (doc/theory/joints.md §7): the same law enforced on the
    * full system by penalty springs between the two sides of every closed pair
    * (all three directions when it sticks, the normal only when it slips, with
    * the friction force as a load), the penalized matrix refactorized at every
@@ -260,7 +260,7 @@ namespace archdam::joints
   };
 
   /**
-   * The solve of one Newmark step with joint forces (numerics.md §3), for
+   * The solve of one Newmark step with joint forces (doc/theory/joints.md §5), for
    * NewmarkIntegrator::advance(): @p solver's predictor, contact problem and
    * corrector with w_base = B u^p; the pair state is committed and how the
    * contact problem went is left in @p step (the caller decides what a step

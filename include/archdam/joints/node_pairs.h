@@ -12,7 +12,7 @@
 namespace archdam::joints
 {
   /**
-   * A node pair of a joint (numerics.md §3): the coincident support points of
+   * A node pair of a joint (doc/theory/joints.md §1): the coincident support points of
    * side 1 and side 2, with the local frame (xi = unit normal from side 1 to
    * side 2, eta horizontal, zeta = xi x eta) and the tributary area
    * A = int_face N_i dA from the face quadrature of side 1.

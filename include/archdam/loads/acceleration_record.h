@@ -6,7 +6,7 @@
 namespace archdam::loads
 {
   /**
-   * A sampled acceleration history in m/s^2 (SI, architecture.md §3).
+   * A sampled acceleration history in m/s^2 (SI, doc/theory/conventions.md §3).
    *
    * Between samples the acceleration is linear: this is the definition of the
    * motion everywhere in ArchDam (the analysis interpolates it, the response

@@ -15,10 +15,10 @@
 
 /**
  * Ground-motion input: the three-component ground acceleration a_g(t) that
- * drives the dynamic stage (numerics.md §6), each component a recorded
+ * drives the dynamic stage (doc/theory/loading-sequence.md §3-§4), each component a recorded
  * accelerogram (record_io.h) or an artificial spectrum-compatible motion
  * (artificial_motion.h), optionally processed (record_processing.h).
- * Components are named by the model axes (architecture.md §3): x stream,
+ * Components are named by the model axes (doc/theory/conventions.md §3): x stream,
  * y cross-stream, z vertical.
  */
 namespace archdam::loads

@@ -4,7 +4,7 @@
 
 namespace archdam::loads
 {
-  /// The `Static loads` subsection (numerics.md §6, step 1).
+  /// The `Static loads` subsection (doc/theory/loading-sequence.md §1).
   struct StaticLoadParameters
   {
     bool   gravity         = true;

@@ -12,7 +12,7 @@
 namespace archdam::output
 {
   /**
-   * The hydrodynamic pressure at named points in the water (numerics.md §7):
+   * The hydrodynamic pressure at named points in the water (doc/theory/results.md §4):
    * its history every step (`pressure_histories.csv`, rank 0 writes) and, on
    * finish(), the profile over the points at the chosen times with the
    * envelope (`pressure_profile.csv`: name, x, y, z, p at each time, max,

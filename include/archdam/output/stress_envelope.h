@@ -15,7 +15,7 @@
 namespace archdam::output
 {
   /**
-   * The stress envelope on the dam faces (numerics.md §7): at every point of
+   * The stress envelope on the dam faces (doc/theory/results.md §3): at every point of
    * the dam's surface, the largest major principal stress s1 and the smallest
    * (most compressive) minor principal stress s3 over the dynamic stage, with
    * the time of each. The stage's initial state (t = 0, the static state when
@@ -24,13 +24,13 @@ namespace archdam::output
    *
    * The points are the face quadrature points (QGauss(degree + 1), the rule of
    * the surface loads) of the dam cells' faces that carry boundary id 0 (free
-   * surface) or 7 (wetted face, architecture.md §3): inside a face, so each
+   * surface) or 7 (wetted face, doc/theory/conventions.md §5): inside a face, so each
    * point belongs to exactly one dam cell and its stress has one value. Joint
    * faces (ids 100 + 2k, 101 + 2k from the splitter), the dam-rock interface
    * (an interior face) and a truncated base (ids 1, 2) are never taken.
    *
    * Each face belongs to one part of the surface, from the outward normal n
-   * averaged over the face (axes of architecture.md §3):
+   * averaged over the face (axes of doc/theory/conventions.md §3):
    *  - crest:      n_z is the largest component (the normal within about 45
    *                degrees of the vertical);
    *  - upstream:   otherwise, n_x <= -0.1;

@@ -25,7 +25,7 @@
 namespace archdam
 {
   /**
-   * All parameters of a case (architecture.md §4). Nothing global lives here:
+   * All parameters of a case (doc/theory/conventions.md §7). Nothing global lives here:
    * each module declares its own subsection and binds it to its own struct;
    * this only aggregates them.
    */

@@ -21,7 +21,7 @@ namespace archdam::time
    *   expand():   x_I = A_II^{-1} (b_I - A_IΓ x_Γ)  (backward substitution),
    * which together cost one back-substitution (MUMPS's reduced right-hand
    * side, ICNTL(19) and ICNTL(26)). The contact problem of the joints is
-   * such an interface problem (numerics.md §3, paper eq. 2.5-2.8).
+   * such an interface problem (doc/theory/joints.md §4-§5, paper eq. 2.5-2.8).
    * Under MPI the matrix enters distributed; the right-hand side, the
    * reduced right-hand side and the solution pass through rank 0.
    */

@@ -13,7 +13,7 @@ namespace archdam::time
   /**
    * A sparse matrix factorized once by MUMPS through PETSc (KSPPREONLY with a
    * Cholesky/LDL^T factorization, KSPSetUp called once), then applied by
-   * back-substitution as often as needed. performance.md explains the choice:
+   * back-substitution as often as needed. doc/performance.md §5-§6 explains the choice:
    * the fastest factorization measured here, and explicit control over when the
    * factorization happens (deal.II's SparseDirectMUMPS refactorizes or ignores a
    * new matrix silently).
@@ -45,7 +45,7 @@ namespace archdam::time
     solve(Vector &x, const Vector &b) const;
 
     /// X = A^{-1} B for every column of the dense matrix B at once
-    /// (KSPMatSolve: one multi-column back-substitution, performance.md).
+    /// (KSPMatSolve: one multi-column back-substitution, doc/performance.md §6).
     void
     solve(Mat X, Mat B) const;
 

@@ -11,7 +11,7 @@
 
 namespace archdam::time
 {
-  /// The `Time integration` subsection (numerics.md §2).
+  /// The `Time integration` subsection (doc/theory/time-integration.md §2).
   struct NewmarkParameters
   {
     double time_step = 0.01;
@@ -44,7 +44,7 @@ namespace archdam::time
   };
 
   /**
-   * Prescribed motion on constrained DOFs (numerics.md §5: the outer boundary
+   * Prescribed motion on constrained DOFs (doc/theory/foundation.md §7: the outer boundary
    * of a massed foundation). The DOFs are constrained (homogeneously) in the
    * model's M, D and K, so Kbar keeps them fixed and stays factorized once;
    * their coupling to the free DOFs is carried by the full (unconstrained)
@@ -65,7 +65,7 @@ namespace archdam::time
   };
 
   /**
-   * The generalized Newmark scheme of the paper's eq. 2.1-2.4 (numerics.md §2)
+   * The generalized Newmark scheme of the paper's eq. 2.1-2.4 (doc/theory/time-integration.md §2-§3)
    * for M a + D v + K u = F with Rayleigh damping D = alpha M + beta K. With
    * the predictors
    *   u^p = u_n + dt v_n + dt^2/2 a_n,  v^p = v_n + dt a_n
@@ -93,7 +93,7 @@ namespace archdam::time
 
     /**
      * The same scheme for M a + D v + K u = F with a general damping matrix D
-     * (e.g. the coupled dam-water system, numerics.md §4, whose D holds the
+     * (e.g. the coupled dam-water system, doc/theory/reservoir.md §5, whose D holds the
      * Rayleigh damping of the solid and the radiation of the water):
      *   Kbar = M + beta1 dt D + beta2 dt^2 K,
      *   Kbar da = F_{n+1} - M a_n - D v^p - K u^p.
@@ -113,7 +113,7 @@ namespace archdam::time
     /**
      * Solver of one step's Kbar da = rhs. The default is the back-substitution
      * with the factorized Kbar; a joint solver puts its predictor, contact
-     * problem and corrector here (numerics.md §3), reading u^p of the step
+     * problem and corrector here (doc/theory/joints.md §5), reading u^p of the step
      * from predicted_displacement().
      */
     using StepSolver = std::function<void(const Vector &rhs, Vector &da)>;

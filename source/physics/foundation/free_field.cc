@@ -86,7 +86,7 @@ namespace archdam::physics::foundation
     return FreeField(control, rock, z_surface, z_bottom);
   }
 
-  // u_ff = 1/2 [u_c(t1) + u_c(t2)], t1,2 = t - T +- s/c (numerics.md §5), and
+  // u_ff = 1/2 [u_c(t1) + u_c(t2)], t1,2 = t - T +- s/c (doc/theory/foundation.md §4), and
   // the same for its time derivatives.
   Tensor<1, dim>
   FreeField::incident_plus_reflected(const double z, const double time,

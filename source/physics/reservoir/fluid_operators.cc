@@ -162,7 +162,7 @@ namespace archdam::physics::reservoir
 
   namespace
   {
-    /// G, H and Q of the water cells (numerics.md §4).
+    /// G, H and Q of the water cells (doc/theory/reservoir.md §3).
     void
     assemble_water_cells(const fe::FESpace &space, const ReservoirParameters &p,
                          const double g, FluidOperators &ops)
@@ -230,7 +230,7 @@ namespace archdam::physics::reservoir
     /**
      * S = rho_w int N_f^T n^T N_s of one interface pair, on the smaller
      * face's quadrature; the larger face's cell is evaluated at those points
-     * through the inverse of its mapping (numerics.md §4, architecture.md §3).
+     * through the inverse of its mapping (doc/theory/reservoir.md §4, doc/theory/conventions.md §6).
      * Also the pair's part of the influence S iota_d.
      */
     class PairCoupling

@@ -11,7 +11,7 @@ namespace archdam::physics::reservoir
     prm.add_parameter("Model", model,
                       "compressible = pressure in the water cells with the wave "
                       "equation, radiation upstream and absorbing bottom "
-                      "(numerics.md §4, paper eq. 3.1-3.2); incompressible = the "
+                      "(doc/theory/reservoir.md, paper eq. 3.1-3.2); incompressible = the "
                       "same with an infinite sound speed; westergaard = "
                       "generalized Westergaard added mass on the wetted dam "
                       "face, no water unknowns; none = empty reservoir.",

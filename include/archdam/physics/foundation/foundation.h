@@ -11,7 +11,7 @@
 namespace archdam::physics::foundation
 {
   /**
-   * The `Foundation` subsection (numerics.md §5).
+   * The `Foundation` subsection (doc/theory/foundation.md §1).
    *
    * massless: stiffness only, outer boundary (bottom and sides) fixed, the
    * ground acceleration applied uniformly (relative formulation).

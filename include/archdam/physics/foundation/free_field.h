@@ -45,7 +45,7 @@ namespace archdam::physics::foundation
 
   /**
    * The free field of a homogeneous half-space for vertically propagating
-   * plane waves (numerics.md §5): SV waves for the horizontal components
+   * plane waves (doc/theory/foundation.md §4): SV waves for the horizontal components
    * (speed c_s), P waves for the vertical one (speed c_p). With the free
    * surface at z_s, the model bottom at z_b and the depth s = z_s - z,
    *   u_ff(z, t) = 1/2 [u_c(t - T + s/c) + u_c(t - T - s/c)],  T = (z_s - z_b)/c,

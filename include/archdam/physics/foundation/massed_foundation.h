@@ -14,7 +14,7 @@ namespace archdam::physics::foundation
 {
   /**
    * The outer boundary of a massed foundation in the dynamic stage
-   * (numerics.md §5), whichever its kind: a step with the MTF (or the fixed
+   * (doc/theory/foundation.md §7-§9), whichever its kind: a step with the MTF (or the fixed
    * boundary) prescribes the boundary displacements computed before the
    * solve (time::PrescribedDofs); a step with the viscous boundary adds the
    * free-field forces to the load, its dashpots being part of Kbar.

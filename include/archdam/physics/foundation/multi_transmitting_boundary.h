@@ -13,7 +13,7 @@ namespace archdam::physics::foundation
 {
   /**
    * Liao's multi-transmitting formula on the outer boundary of a massed
-   * foundation (numerics.md §5), or, with `Transmitting boundary = fixed`, the
+   * foundation (doc/theory/foundation.md §5-§7), or, with `Transmitting boundary = fixed`, the
    * free-field motion alone. At every outer-boundary DOF 0 (component c,
    * inward normal -n) the scattered motion u_s = u - u_0 - u_ff (u_0: the
    * state the dynamic stage starts from) at t + dt is

@@ -28,7 +28,7 @@ namespace archdam::physics::foundation
    * Every displacement DOF on the outer (truncation) boundary of the
    * foundation, bottom and sides (boundary ids 1 and 2), sorted by index.
    * The list is the same on every rank (small data is replicated,
-   * architecture.md §5).
+   * doc/theory/conventions.md §8).
    */
   std::vector<BoundaryDof>
   outer_boundary_dofs(const fe::FESpace &space);

@@ -11,7 +11,7 @@
 namespace archdam::physics::foundation
 {
   /**
-   * The viscous-spring boundary (numerics.md §5, the comparison boundary):
+   * The viscous-spring boundary (doc/theory/foundation.md §8, the comparison boundary):
    * at each outer-boundary DOF (component c, unit outward normal n, tributary
    * area A = int N dA) a dashpot and a spring to the free field,
    *   c_i = rho (n_c^2 c_p + (1 - n_c^2) c_s) A         (Lysmer & Kuhlemeyer 1969),

@@ -15,7 +15,7 @@ namespace archdam::physics::reservoir
 
   /**
    * The coupled dam-water system in the symmetric form of the paper's eq. 3.2
-   * (numerics.md §4). With Phi = -beta2 dt^2 / rho_w scaling the fluid rows,
+   * (doc/theory/reservoir.md §5). With Phi = -beta2 dt^2 / rho_w scaling the fluid rows,
    *   M_c = [[M, 0], [Phi S, Phi G]],   D_c = [[alpha M + beta K, 0], [0, Phi H]],
    *   K_c = [[K, -(1/rho_w) S^T], [0, Phi Q]]
    * (unknowns (u, p)), so that Kbar = M_c + beta1 dt D_c + beta2 dt^2 K_c is
@@ -43,7 +43,7 @@ namespace archdam::physics::reservoir
 
   /**
    * The columns of the coupled system at the prescribed solid DOFs of a
-   * massed foundation's outer boundary (numerics.md §5, time::PrescribedDofs).
+   * massed foundation's outer boundary (doc/theory/foundation.md §7, time::PrescribedDofs).
    * On entry @p prescribed holds the DOFs and the columns of the solid's M
    * and K there (solid::assemble_mass_and_stiffness_columns); on exit the
    * columns of M_c, D_c and K_c above:

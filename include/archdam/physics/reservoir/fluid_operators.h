@@ -12,7 +12,7 @@ namespace archdam::physics::reservoir
 
   /**
    * A fluid face (id 6) and a solid face (id 7) of the same fluid-solid
-   * interface where one face contains the other (architecture.md §3: the water
+   * interface where one face contains the other (doc/theory/conventions.md §6: the water
    * mesh may be coarser than the solid's, or finer). The coupling is
    * integrated on the smaller face.
    */
@@ -44,7 +44,7 @@ namespace archdam::physics::reservoir
                          dealii::AffineConstraints<double> &constraints);
 
   /**
-   * The discrete reservoir of numerics.md §4 (paper eq. 3.1):
+   * The discrete reservoir of doc/theory/reservoir.md §3 (paper eq. 3.1):
    *   G p_tt + H p_t + Q p + S u_tt + S iota a_g = 0,
    *   G = (1/g) int_free N^T N + (1/c^2) int_water N^T N,
    *   H = (1/c) int_truncation N^T N + q int_bottom N^T N,
@@ -73,7 +73,7 @@ namespace archdam::physics::reservoir
 
   /**
    * The columns of S at the solid DOFs @p columns (e.g. the prescribed outer
-   * boundary of a massed foundation, numerics.md §5), which the constrained
+   * boundary of a massed foundation, doc/theory/foundation.md §7), which the constrained
    * S of FluidOperators drops: the coupling of every interface pair that
    * touches them, with the model's constraints on the fluid rows and on the
    * other columns, but not on @p columns. The pairs of other columns may add

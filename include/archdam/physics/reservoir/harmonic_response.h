@@ -26,7 +26,7 @@ namespace archdam::physics::reservoir
   /**
    * Steady-state pressure amplitude of the water alone (rigid, fixed solid)
    * under the harmonic ground acceleration a_g(t) = Re(e^{i omega t}) e_d:
-   *   (Q - omega^2 G + i omega H) P = -S iota_d   (numerics.md §4),
+   *   (Q - omega^2 G + i omega H) P = -S iota_d   (doc/theory/reservoir.md §9),
    * on the free pressure DOFs.
    */
   void
@@ -43,7 +43,7 @@ namespace archdam::physics::reservoir
   /**
    * Steady-state response (U, P) of the dam (with its water, if @p water is
    * given) to the harmonic ground acceleration a_g(t) = Re(e^{i omega t}) e_d,
-   * relative formulation (numerics.md §4, §5):
+   * relative formulation (doc/theory/reservoir.md §9, doc/theory/foundation.md §2):
    *   (K - omega^2 M + i omega D) U - (1/rho_w) S^T P = -M iota_d,
    *   -omega^2 S U + (Q - omega^2 G + i omega H) P = -S iota_d,
    * D = alpha M + beta K. The water rows are scaled by 1/(omega^2 rho_w),

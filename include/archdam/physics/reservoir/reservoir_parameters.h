@@ -6,7 +6,7 @@
 
 namespace archdam::physics::reservoir
 {
-  /// How the reservoir acts on the dam and the rock (numerics.md §4).
+  /// How the reservoir acts on the dam and the rock (doc/theory/reservoir.md).
   enum class Model
   {
     compressible,   ///< pressure p in the water cells, wave equation, radiation
@@ -44,7 +44,7 @@ namespace archdam::physics::reservoir
       return kind() == Model::compressible || kind() == Model::incompressible;
     }
     /// q = (1 - alpha_r) / (c (1 + alpha_r)) of the absorbing bottom and banks
-    /// (numerics.md §4); 0 for a rigid bottom or incompressible water.
+    /// (doc/theory/reservoir.md §2); 0 for a rigid bottom or incompressible water.
     double
     bottom_absorption() const;
     bool

@@ -7,7 +7,7 @@
 namespace archdam::physics::solid
 {
   /**
-   * Rayleigh damping D = alpha M + beta K (numerics.md §1), with alpha and beta
+   * Rayleigh damping D = alpha M + beta K (doc/theory/solid.md §4), with alpha and beta
    * given directly or derived from a damping ratio zeta reached at two
    * frequencies f1, f2: alpha = 2 zeta w1 w2 / (w1 + w2), beta = 2 zeta / (w1 + w2)
    * (Chopra, Dynamics of Structures, eq. 11.4.9).

@@ -8,7 +8,7 @@
 
 namespace archdam::physics::solid
 {
-  /// Linear isotropic elastic material (numerics.md §1).
+  /// Linear isotropic elastic material (doc/theory/solid.md §1).
   struct ElasticMaterial
   {
     double youngs_modulus = 22e9; // Pa

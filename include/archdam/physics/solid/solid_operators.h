@@ -17,7 +17,7 @@ namespace archdam::physics::solid
   /**
    * Consistent mass M = int rho N^T N and stiffness
    * K = int (lambda div N div N + 2 mu eps(N) : eps(N)) of the solid cells
-   * (numerics.md §1), assembled with the model's constraints (constrained rows
+   * (doc/theory/solid.md §3), assembled with the model's constraints (constrained rows
    * and columns condensed, so the step unknowns there stay zero).
    */
   void
@@ -45,7 +45,7 @@ namespace archdam::physics::solid
   /**
    * The load of a uniform acceleration field b acting on the mass of the chosen
    * cells, F_i = int rho b . N_i. With b = -g e_z it is gravity; with b = e_d it
-   * is the influence load M iota_d of the relative formulation (numerics.md §5),
+   * is the influence load M iota_d of the relative formulation (doc/theory/foundation.md §2),
    * whose effective earthquake load is -a_g,d(t) M iota_d.
    */
   void

@@ -9,7 +9,7 @@
 namespace archdam::physics::solid
 {
   /**
-   * Stress recovered from the displacement gradient (numerics.md §1) for
+   * Stress recovered from the displacement gradient (doc/theory/solid.md §6) for
    * output: the stress tensor and the major and minor principal stress
    * (tension positive). Zero in water cells.
    */
