@@ -79,8 +79,17 @@ def run(args, case):
         command += ["--set", s]
     print(f"{case}: running", " ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
     os.makedirs(out, exist_ok=True)
+    # The run's progress is streamed to the terminal as it comes, and kept
+    # in run.log beside the results.
     with open(os.path.join(out, "run.log"), "w") as log:
-        status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
+        process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                   text=True, bufsize=1)
+        for line in process.stdout:
+            sys.stdout.write(f"  {case} | {line}")
+            sys.stdout.flush()
+            log.write(line)
+            log.flush()
+        status = process.wait()
     if status != 0:
         sys.exit(f"{case}: archdam failed with exit code {status}; see {out}/run.log")
 

@@ -54,4 +54,33 @@ main(int argc, char **argv)
   run_archdam("an end time without ground motion",
               {"good.prm", "--set", "Time integration/End time=0"});
   run_archdam("a valid case runs", {"good.prm", "--set", "Time integration/Time step=0.01"});
+
+  // --help: every option of the usage lines has a line of its own, with an
+  // example and where the documentation is; --version: ArchDam's version and
+  // those of the libraries it runs on, one a line.
+  const auto standard_output = [](const std::vector<const char *> &argv) {
+    std::ostringstream out, err;
+    const int code = archdam::run_command_line(argv.size(), argv.data(), out, err);
+    return std::make_pair(code, out.str());
+  };
+  const auto [help_code, help] = standard_output({"archdam", "--help"});
+  bool every_option = true;
+  for (const std::string option :
+       {"--set", "--mesh-only", "--resume", "--print-parameters", "--help", "--version"})
+    every_option = every_option && help.find("\n  " + option) != std::string::npos;
+  archdam::testing::log() << "* --help\n  exit code " << help_code
+                          << "\n  every option on a line of its own: "
+                          << (every_option ? "yes" : "NO") << "\n  an example: "
+                          << (help.find("Example") != std::string::npos ? "yes" : "NO")
+                          << "\n  where the documentation is: "
+                          << (help.find("doc/user-guide.md") != std::string::npos ? "yes" : "NO")
+                          << "\n" << std::endl;
+  const auto [version_code, version] = standard_output({"archdam", "--version"});
+  std::istringstream lines(version);
+  std::string        line, names;
+  while (std::getline(lines, line))
+    names += line.substr(0, line.find(' ')) + (line.find(' ') + 1 < line.size() ? " x.y" : "") +
+             "; ";
+  archdam::testing::log() << "* --version\n  exit code " << version_code << "\n  " << names
+                          << "\n" << std::endl;
 }

@@ -1,7 +1,9 @@
 // Bad foundation input ends with a message naming the problem (InputError):
 // - the MTF needs interior points j c_a dt inside the rock (doc/theory/foundation.md §5),
 //   a time step too long for the rock's depth is reported;
-// - the viscous boundary without springs cannot carry the static stage.
+// - the viscous boundary without springs cannot carry the static stage;
+// - and what must be accepted: a dam flush with the rock's side boundary,
+//   whose MTF points run along the rock's top face under the dam.
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
@@ -14,13 +16,14 @@ using namespace archdam;
 namespace
 {
   std::string
-  model(const std::string &foundation)
+  model(const std::string &foundation, const std::string &extent = "10",
+        const std::string &time_step = "0.01")
   {
     return R"(
 subsection Mesh
   subsection Box
     set Rock depth = 10
-    set Rock extent = 10
+    set Rock extent = )" + extent + R"(
     set Rock cell size = 10
   end
 end
@@ -32,7 +35,7 @@ subsection Foundation
 )" + foundation + R"(
 end
 subsection Time integration
-  set Time step = 0.01
+  set Time step = )" + time_step + R"(
   set End time = 0.05
 end
 subsection Output
@@ -59,6 +62,27 @@ end
         testing::log() << what << ":" << std::endl << "  " << e.what() << std::endl;
       }
   }
+
+  /// The model runs: the MTF's points of a boundary node on the edge where
+  /// the rock's side meets its top under the dam lie on the rock's top face,
+  /// in the rock's closure.
+  void
+  expect_run(const std::string &what, const std::string &foundation, const std::string &extent,
+             const std::string &time_step)
+  {
+    std::ostringstream quiet;
+    try
+      {
+        const Parameters     p = parameters_from_string(model(foundation, extent, time_step));
+        analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
+        sim.run();
+        testing::log() << what << ": yes" << std::endl;
+      }
+    catch (const InputError &e)
+      {
+        testing::log() << what << ": NO" << std::endl << "  " << e.what() << std::endl;
+      }
+  }
 } // namespace
 
 int
@@ -69,4 +93,8 @@ main(int argc, char **argv)
   expect_error("MTF with a time step too long for the rock", "  set Transmitting boundary = MTF");
   expect_error("viscous boundary without springs, static stage",
                "  set Transmitting boundary = viscous");
+  // 2 c_p dt = 3.2 m, within the 10 m of rock below the dam; the dam's end
+  // faces are flush with the rock's sides.
+  expect_run("MTF under a dam flush with the rock's side boundary (Rock extent = 0) runs",
+             "  set Transmitting boundary = MTF", "0", "0.0005");
 }

@@ -8,7 +8,10 @@
 #include "case_text.h"
 #include "command_line_tests.h"
 
+#include <archdam/output/run_lock.h>
+
 #include <filesystem>
+#include <regex>
 
 using archdam::testing::run_archdam;
 using archdam::testing::write_input;
@@ -39,6 +42,20 @@ namespace
                          "ACCELERATION TIME SERIES IN UNITS OF G\n"
                          "NPTS=    3, DT=   .0100 SEC\n"
                          "  .1000E-01  1.0000E+308  .2000E-01\n";
+
+  /// run_archdam(), with what changes from run to run in the message
+  /// (process number, host, start time) replaced by "...".
+  void
+  run_masked(const std::string &what, const std::vector<std::string> &args)
+  {
+    std::string err;
+    const int   code =
+      archdam::testing::run_in_process(archdam::run_command_line, "archdam", args, err);
+    err = std::regex_replace(err, std::regex(R"(\(process [0-9]+ on [^,]*, started [^)]*\))"),
+                             "(process ..., started ...)");
+    archdam::testing::log() << "* " << what << "\n  exit code " << code << "\n  " << err
+                            << std::endl;
+  }
 
   /// A .msh file (format 2.2) of one unit hexahedron of material @p id.
   std::string
@@ -111,6 +128,60 @@ main(int argc, char **argv)
   run_set("a monitor point with two coordinates", "Monitors/Points=crest: 5, 10");
   run_set("a monitor coordinate that is not a number", "Monitors/Points=crest: 5, 10, top");
   run_set("a monitor name used twice", "Monitors/Points=a: 5, 10, 20; a: 5, 5, 20");
+
+  // Case files: includes, empty files, folders, entries set twice
+  write_input("self.prm", "include self.prm\n");
+  write_input("ping.prm", "include pong.prm\n");
+  write_input("pong.prm", "# the other half of a cycle\ninclude ping.prm\n");
+  write_input("empty.prm", "");
+  write_input("comments_only.prm", "# a case file with nothing set\n\n");
+  write_input("twice.prm", good_case + "\nsubsection Time integration\n"
+                                       "  set Time step = 0.01\n  set Time step = 0.005\nend\n");
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      std::filesystem::create_directories("a_folder.prm");
+      std::filesystem::create_directories("cases/variants");
+      std::filesystem::create_directories("cases/parts");
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  // A variant in a subfolder includes the base case one folder up, which
+  // includes a part from its own subfolder: each name relative to the file
+  // that holds it, whatever the working directory.
+  write_input("cases/variants/variant.prm", "include ../base.prm\n");
+  write_input("cases/base.prm", "include parts/time.prm\n" + good_case);
+  write_input("cases/parts/time.prm",
+              "subsection Time integration\n  set Time step = 0.01\nend\n");
+  run_archdam("a case file that includes itself", {"self.prm"});
+  run_archdam("two case files that include each other", {"ping.prm"});
+  run_archdam("an empty case file", {"empty.prm"});
+  run_archdam("a case file with only comments", {"comments_only.prm"});
+  run_archdam("a case file that is a folder", {"a_folder.prm"});
+  run_archdam("includes relative to each including file (runs)",
+              {"cases/variants/variant.prm"});
+  run_archdam("an entry set twice in one section (runs, with a warning)", {"twice.prm"});
+
+  // Values that are numbers but cannot be meant
+  run_set("an end time of 1e9 s", "Time integration/End time=1e9");
+  run_set("an end time of 1e308 s", "Time integration/End time=1e308");
+  run_set("a time step of 1e-300 s", "Time integration/Time step=1e-300");
+  run_set("a monitor coordinate nan", "Monitors/Points=crest: 5, nan, 20");
+  run_set("a concrete density of 0", "Materials/Concrete/Density=0");
+  run_set("a Young's modulus of 0", "Materials/Concrete/Young's modulus=0");
+  run_set("a Young's modulus of 1e308", "Materials/Rock/Young's modulus=1e308");
+  run_set("a scale factor of 1e308", "Ground motion/Component x/Scale factor=1e308");
+  run_set("gravity without a static stage", "Analysis/Stages=dynamic");
+
+  // One run at a time in an output directory: a run holds it (here this
+  // process, as a second run started at the same time would), and a second
+  // one, or a resumed one, stops before writing anything.
+  {
+    const archdam::output::RunLock running("busy", "good", MPI_COMM_WORLD);
+    run_masked("a second run in the output directory of a running one",
+               {"good.prm", "--set", "Output/Directory=busy"});
+    run_masked("--resume in the output directory of a running run",
+               {"good.prm", "--set", "Output/Directory=busy", "--resume"});
+  }
+  run_set("the same directory once the first run has ended (runs)", "Output/Directory=busy");
 
   // Ground motion
   run_set("a record sample beyond the range of double in m/s^2",

@@ -14,6 +14,9 @@
 //    id reserved for the splitter;
 //  - a joint face without a partner: two blocks meshed separately (coincident
 //    faces that share no nodes);
+//  - dam blocks with a gap in their numbers (a Gmsh volume dropped for want
+//    of a physical group leaves a hole) and two neighbouring blocks that do
+//    not touch (no joint between them);
 //  - a physical surface inside the model (on a joint);
 //  - malformed files, each caught before deal.II's GridIn reads them (the
 //    fuzz target fuzz_gmsh_mesh found what GridIn does not check): a count
@@ -102,9 +105,10 @@ namespace
   }
 
   /// Two unit cubes side by side in x, each its own dam block, with 12 or 16
-  /// nodes: the 16-node file does not connect them.
+  /// nodes: the 16-node file does not connect them; @p gap > 0 moves the
+  /// second one that far away in x.
   std::string
-  two_blocks(const bool connected)
+  two_blocks(const bool connected, const unsigned int gap = 0)
   {
     std::ostringstream s;
     s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << (connected ? 12 : 16) << "\n";
@@ -120,7 +124,7 @@ namespace
                   hex[c].push_back(hex[0][1 + 2 * j + 4 * k]); // the shared face's node
                   continue;
                 }
-              s << tag << ' ' << c + i << ' ' << j << ' ' << k << "\n";
+              s << tag << ' ' << c * (1 + gap) + i << ' ' << j << ' ' << k << "\n";
               hex[c].push_back(tag++);
             }
     s << "$EndNodes\n$Elements\n2\n";
@@ -223,6 +227,16 @@ main(int argc, char **argv)
   run("two dam blocks sharing their joint's nodes (accepted)", "connected_blocks.msh");
   write("separate_blocks.msh", two_blocks(false));
   run("two dam blocks meshed separately: joint faces without a partner", "separate_blocks.msh");
+  write("blocks_apart.msh", two_blocks(false, 1));
+  run("dam blocks 10 and 11 that do not touch (no joint between them)", "blocks_apart.msh");
+  // The example with the middle block's volume dropped (a Gmsh volume
+  // without a physical group is not saved): a hole between blocks 10 and 12,
+  // with water beside it.
+  write("middle_block_missing.msh", edit_elements([](const std::vector<long> &e) {
+          return !(e[1] == 5 && e[3] == 11);
+        }));
+  run("the example without its middle block (a hole between blocks 10 and 12)",
+      "middle_block_missing.msh");
   {
     // a quadrilateral on the joint between the two connected blocks
     std::string text = two_blocks(true);

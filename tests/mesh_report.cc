@@ -16,7 +16,7 @@
 
 #include <archdam/geometry/mesh.h>
 #include <archdam/geometry/mesh_checks.h>
-#include <archdam/geometry/mesh_report.h>
+#include <archdam/output/mesh_report.h>
 
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
@@ -56,7 +56,7 @@ main(int argc, char **argv)
   const unsigned int nz_dam = ex::nz_wet + ex::nz_dry;
   for (const unsigned int degree : {1u, 2u})
     {
-      const auto r = geometry::make_mesh_report(model, degree);
+      const auto r = output::make_mesh_report(model, degree);
       std::ostringstream text;
       r.print(text);
       log() << "--- degree " << degree << " ---\n" << text.str();
@@ -79,7 +79,7 @@ main(int argc, char **argv)
             << std::endl;
     }
 
-  const auto r = geometry::make_mesh_report(model, 2);
+  const auto r = output::make_mesh_report(model, 2);
   check_relative("Dam volume T W H [m^3]", r.dam_volume, ex::dam_volume, 1e-12);
   check_relative("Water volume Lu W WL [m^3]", r.water_volume, ex::water_volume, 1e-12);
   check_relative("Wetted area W WL [m^2]", r.wetted_area, ex::wetted_area, 1e-12);
@@ -101,7 +101,7 @@ main(int argc, char **argv)
           return Point<3>(x[0] + std::tan(t) * std::min(x[2], 0.), x[1], x[2]);
         },
         sheared);
-      const auto s = geometry::make_mesh_report(sheared, 1);
+      const auto s = output::make_mesh_report(sheared, 1);
       check_relative("Rock sheared by " + std::to_string(int(degrees)) +
                        " deg: minimum scaled Jacobian (cos t)",
                      s.min_scaled_jacobian, std::cos(t), 1e-12);

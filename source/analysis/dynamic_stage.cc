@@ -55,6 +55,43 @@ namespace archdam::analysis
     energy->start(current, joint_solver.get());
   }
 
+  void
+  Simulation::check_motion_duration(const double end)
+  {
+    if (ground_motion->empty())
+      return;
+    std::ostringstream text;
+    text << std::setprecision(6);
+    if (end > ground_motion->duration() + 0.5 * p.time_integration.time_step)
+      {
+        text << "the dynamic stage runs to t = " << end << " s, past the end of the ground "
+             << "motion at " << ground_motion->duration() << " s: from there on the ground is "
+             << "at rest and the dam vibrates freely (Time integration/End time).";
+        warn(text.str());
+      }
+    // A generated motion ends at rest whatever its envelope; cut while the
+    // envelope is still high, its last seconds are forced down by the
+    // end-at-rest correction instead of decaying (doc/ground-motion.md).
+    for (unsigned int d = 0; d < 3; ++d)
+      if (ground_motion->generation_report(d))
+        {
+          const auto   s         = p.ground_motion.generated.settings(d, "");
+          const double intensity = s.envelope(s.duration);
+          if (intensity > 0.1)
+            {
+              text.str("");
+              text << "the generated motion in " << "xyz"[d] << " ends at Duration = "
+                   << s.duration << " s with its intensity envelope still at " << intensity
+                   << " of the strong part (Strong motion end = " << s.envelope.strong_end
+                   << " s, Decay coefficient = " << s.envelope.decay
+                   << " 1/s): it is cut while strong; a Duration of at least "
+                   << s.envelope.strong_end + std::log(10.) / std::max(s.envelope.decay, 1e-12)
+                   << " s lets it decay to 0.1 (Ground motion/Generated motion).";
+              warn(text.str());
+            }
+        }
+  }
+
   /**
    * Dynamic stage (doc/theory/time-integration.md §2 and doc/theory/loading-sequence.md §3): the generalized Newmark
    * scheme from the static state at rest, under F(t) = F_static - M iota a_g(t),
@@ -71,6 +108,7 @@ namespace archdam::analysis
       throw InputError("Time integration/End time is 0 and there is no ground motion to "
                        "take the duration from.");
     const unsigned int n_steps = p.time_integration.n_steps(end);
+    check_motion_duration(n_steps * dt);
 
     history = std::make_unique<output::HistoryWriter>(p.output.directory + "/histories.csv",
                                                       monitor->column_names(), comm);
@@ -244,8 +282,11 @@ namespace archdam::analysis
             last_report = elapsed();
             screen << "  step " << n << "/" << n_steps << "  t = " << std::setprecision(4)
                    << current.time << " s  (" << 100 * n / n_steps << " %)  ETA "
-                   << duration_text(last_report / (n + 1 - first_step) * (n_steps - n))
-                   << std::endl;
+                   << duration_text(last_report / (n + 1 - first_step) * (n_steps - n));
+            if (joint_solver)
+              screen << "  contact iterations <= " << reported_contact_iterations;
+            screen << std::endl;
+            reported_contact_iterations = 0;
           }
       }
     history->write_hdf5(p.output.directory + "/histories.h5");
@@ -254,6 +295,16 @@ namespace archdam::analysis
     stress_envelope->write(p.output.directory, summary);
     energy->add_to(summary);
     screen << energy->line() << std::endl;
+    if (const double error = energy->terms().balance_error();
+        error > EnergyTerms::warning_threshold)
+      {
+        std::ostringstream text;
+        text << std::setprecision(2) << "the energy balance closes only to " << error
+             << ", more than " << EnergyTerms::warning_threshold
+             << ": some work is accounted for by no term (doc/user-guide.md, \"Energy "
+                "balance\").";
+        warn(text.str());
+      }
 
     summary.set("dynamic/time step [s]", dt);
     summary.set("dynamic/steps", n_steps);

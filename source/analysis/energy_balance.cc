@@ -14,7 +14,7 @@ namespace archdam::analysis
   {
     const double magnitudes = std::abs(kinetic) + std::abs(strain) + std::abs(damping) +
                               std::abs(radiated) + std::abs(contact) + std::abs(water) +
-                              std::abs(water_radiated);
+                              std::abs(water_radiated) + std::abs(algorithmic);
     const double scale = std::max(std::abs(input), magnitudes);
     return scale > 0. ? std::abs(input - sum()) / scale : 0.;
   }
@@ -28,7 +28,8 @@ namespace archdam::analysis
     for (Vector *v : {&free_mask, &kept_mask, &pressure_mask, &prescribed_mask, &u_static,
                       &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
-                      &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product})
+                      &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product,
+                      &a_prev, &inertia_prev, &mean, &jump})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -130,6 +131,11 @@ namespace archdam::analysis
     u_prev = u_static;
     free_part(s.v, v_prev);
     damping_force(v_prev, damping_prev);
+    if (dissipative())
+      {
+        free_part(s.a, a_prev);
+        full_product(*m.mass, mass_columns(), a_prev, inertia_prev);
+      }
     p_prev  = 0.;
     impulse = 0.;
     if (has_water)
@@ -179,7 +185,14 @@ namespace archdam::analysis
     du = tmp;
     du -= u_prev;
     u_prev = tmp;
-    free_part(s.v, v_prev);
+    if (dissipative())
+      {
+        tmp = v_prev; // v_n
+        free_part(s.v, v_prev);
+        add_algorithmic_dissipation(s, tmp, dt);
+      }
+    else
+      free_part(s.v, v_prev);
 
     // Rayleigh damping: du . (D v_n + D v_{n+1}) / 2.
     damping_force(v_prev, tmp);
@@ -277,6 +290,31 @@ namespace archdam::analysis
     t_prev = s.time;
   }
 
+  void
+  EnergyBalance::add_algorithmic_dissipation(const time::NewmarkState &s, const Vector &v_old,
+                                             const double dt)
+  {
+    // [u] = dt <v> + dt^2 (Beta2 - Beta1/2) [a] and [v] = dt <a> +
+    // dt (Beta1 - 1/2) [a] (eq. 2.3), so the inertia's work over the step,
+    // [u]^T M <a>, exceeds the change of 1/2 v^T M v by
+    // dt^2 (Beta2 - Beta1/2) [a]^T M <a> - dt (Beta1 - 1/2) <v>^T M [a]:
+    // one product M a_{n+1} a step, M a_n kept from the step before.
+    const double b1 = m.newmark.beta1, b2 = m.newmark.beta2;
+    free_part(s.a, mean);
+    full_product(*m.mass, mass_columns(), mean, jump); // M a_{n+1}
+    mean += a_prev;
+    mean *= 0.5;                                         // <a>
+    a_prev.sadd(-1., 2., mean);                          // a_{n+1}
+    tmp2 = jump;
+    jump -= inertia_prev;                                // M [a]
+    inertia_prev = tmp2;
+    sums.algorithmic += dt * dt * (b2 - 0.5 * b1) * (mean * jump);
+    mean = v_old;
+    mean += v_prev;
+    mean *= 0.5;                                         // <v>
+    sums.algorithmic -= dt * (b1 - 0.5) * (mean * jump);
+  }
+
   EnergyTerms
   EnergyBalance::terms() const
   {
@@ -317,6 +355,8 @@ namespace archdam::analysis
         summary.set(s + "water energy [J]", e.water);
         summary.set(s + "water radiated energy [J]", e.water_radiated);
       }
+    if (dissipative())
+      summary.set(s + "algorithmic dissipation [J]", e.algorithmic);
     summary.set(s + "balance error", e.balance_error());
     if (m.prescribed)
       summary.set(s + "note", "the input work is the net work of the prescribed outer "
@@ -336,6 +376,8 @@ namespace archdam::analysis
       out << " + contact " << e.contact;
     if (has_water)
       out << " + water " << e.water << " + water radiated " << e.water_radiated;
+    if (dissipative())
+      out << " + algorithmic " << e.algorithmic;
     // Round-off differs between runs on different numbers of processes: a
     // closed balance is printed as such.
     const double error = e.balance_error();
@@ -351,7 +393,7 @@ namespace archdam::analysis
   {
     for (const Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                             &boundary_prev, &boundary_static, &free_field_prev,
-                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev})
+                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev})
       binary::write(out, *v);
     binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }
@@ -361,7 +403,7 @@ namespace archdam::analysis
   {
     for (Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                       &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
-                      &radiation_prev, &dashpot_prev, &ub_prev})
+                      &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev})
       binary::read(in, *v);
     binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }

@@ -54,7 +54,7 @@ namespace archdam::analysis
     if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
       summary.set("static/time to build the flexibility matrix [s]", mixed->build_time);
 
-    joints::JointOutput static_output(p.joints, *node_pairs, p.output.directory, "static");
+    output::JointOutput static_output(p.joints, *node_pairs, p.output.directory, "static");
     static_output.record(0., *joint_solver);
     static_output.write_fields(0., *joint_solver);
     static_output.finish(summary);
@@ -68,7 +68,7 @@ namespace archdam::analysis
     if (joint_solver) // the static state: forces, relative displacements, damage
       solver->set_state(*joint_solver);
     joint_solver = std::move(solver);
-    joint_output = std::make_unique<joints::JointOutput>(p.joints, *node_pairs,
+    joint_output = std::make_unique<output::JointOutput>(p.joints, *node_pairs,
                                                          p.output.directory, "dynamic");
     if (resume_from) // the records so far come with the checkpoint
       return;
@@ -82,6 +82,7 @@ namespace archdam::analysis
   {
     contact_iterations += step.iterations;
     max_contact_iterations = std::max(max_contact_iterations, step.iterations);
+    reported_contact_iterations = std::max(reported_contact_iterations, step.iterations);
     if (!step.converged)
       non_converged_times.push_back(t);
     check_convergence(p.joints, *joint_solver, step, "t = " + std::to_string(t) + " s");

@@ -12,21 +12,6 @@ namespace archdam::analysis
 {
   using namespace dealii;
 
-  void
-  ModalParameters::add_parameters(ParameterHandler &prm)
-  {
-    prm.add_parameter("Number of modes", n_modes,
-                      "How many of the lowest natural modes the modal stage computes.",
-                      Patterns::Integer(1, 1000));
-    prm.add_parameter("Tolerance", tolerance,
-                      "Relative tolerance of the eigensolver on each eigenpair.",
-                      Patterns::Double(1e-15, 1e-3));
-    prm.add_parameter("Write mode shapes", write_mode_shapes,
-                      "Write the mode shapes to modes.vtu (one displacement field per "
-                      "mode) in the output directory.",
-                      Patterns::Bool());
-  }
-
   namespace
   {
     void

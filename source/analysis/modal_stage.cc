@@ -1,5 +1,5 @@
 #include <archdam/analysis/simulation.h>
-#include <archdam/output/mode_shapes.h>
+#include <archdam/analysis/mode_shapes.h>
 
 #include <iomanip>
 
@@ -78,7 +78,7 @@ namespace archdam::analysis
     if (p.modal.write_mode_shapes)
       {
         TimerOutput::Scope t(timer, "output");
-        output::write_mode_shapes(p.output.directory, *fe_space, modes);
+        write_mode_shapes(p.output.directory, *fe_space, modes);
       }
   }
 } // namespace archdam::analysis

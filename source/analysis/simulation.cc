@@ -2,16 +2,18 @@
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/geometry/ids.h>
-#include <archdam/geometry/mesh_report.h>
+#include <archdam/output/mesh_report.h>
 #include <archdam/output/mesh_writer.h>
 #include <archdam/physics/reservoir/wetted_face_loads.h>
 #include <archdam/physics/solid/solid_operators.h>
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <filesystem>
-#include <limits>
 #include <iomanip>
+#include <limits>
+#include <regex>
 
 namespace archdam::analysis
 {
@@ -75,7 +77,7 @@ namespace archdam::analysis
   Simulation::build_mesh(Triangulation<dim> &model)
   {
     geometry::build_model_mesh(p.mesh, p.base_directory, model);
-    const auto report = geometry::make_mesh_report(model, p.finite_element.degree);
+    const auto report = output::make_mesh_report(model, p.finite_element.degree);
     if (screen.is_active())
       report.print(screen.get_stream());
     report.add_to(summary);
@@ -241,7 +243,7 @@ namespace archdam::analysis
     summary.set("model/mpi processes", Utilities::MPI::n_mpi_processes(comm));
     summary.set("model/element degree", p.finite_element.degree);
 
-    if (history && !history->rows().empty())
+    if (history && !history->rows().empty() && history->columns().size() > 1)
       {
         const auto &rows  = history->rows();
         const auto &names = history->columns();
@@ -277,6 +279,38 @@ namespace archdam::analysis
       summary.set("wall time [s]/" + stage, seconds);
 
     on_rank_zero(comm, [&] { summary.write(p.output.directory + "/summary.json"); });
+    say_where_results_are();
+  }
+
+  void
+  Simulation::warn(const std::string &text)
+  {
+    screen << "Warning: " << text << std::endl;
+    warnings.push_back(text);
+    summary.set("warnings/" + std::to_string(warnings.size()), text);
+  }
+
+  void
+  Simulation::say_where_results_are()
+  {
+    if (!screen.is_active())
+      return;
+    // The files a user opens: the series are named once, not each record
+    // (NAME_00012.vtu, .h5 and the per-process pieces).
+    static const std::regex     record(R"(.*_[0-9]{4,}(\.[0-9]+)?\.(vtu|pvtu|h5)$)");
+    std::vector<std::string>    names;
+    std::error_code             ec;
+    for (const auto &entry : std::filesystem::directory_iterator(p.output.directory, ec))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name[0] != '.' && !std::regex_match(name, record))
+          names.push_back(name + (entry.is_directory() ? "/" : ""));
+      }
+    std::sort(names.begin(), names.end());
+    std::string list;
+    for (const auto &name : names)
+      list += (list.empty() ? "" : ", ") + name;
+    screen << "Results in '" << p.output.directory << "': " << list << " (doc/user-guide.md, \"Results\")" << std::endl;
   }
 
   void

@@ -1,4 +1,5 @@
 #include <archdam/analysis/simulation.h>
+#include <archdam/analysis/static_resultants.h>
 #include <archdam/base/input_error.h>
 #include <archdam/time/factorized_operator.h>
 
@@ -45,6 +46,7 @@ namespace archdam::analysis
     screen << "Static stage: max |u_i| = " << std::setprecision(4) << max_u << " m"
            << std::endl;
     summary.set("static/max nodal displacement component [m]", max_u);
+    report_static_resultants();
     for (unsigned int k = 0; k < monitor->monitor_points().size(); ++k)
       {
         const auto u = monitor->displacement(k, u_static);
@@ -54,5 +56,30 @@ namespace archdam::analysis
                       u[d]);
       }
     write_fields();
+  }
+
+  void
+  Simulation::report_static_resultants()
+  {
+    namespace reservoir = physics::reservoir;
+    Tensor<1, dim> gravity;
+    gravity[dim - 1] = p.static_loads.gravity ? -p.static_loads.g : 0.;
+    const bool   hydrostatic = p.static_loads.hydrostatic && p.reservoir.kind() != reservoir::Model::none;
+    const double level = hydrostatic ? reservoir::water_level(p.reservoir, triangulation) : 0.;
+    const double rho_g = p.reservoir.density * p.static_loads.g;
+    Vector       u;
+    fe_space->reinit_ghosted(u);
+    u            = u_static;
+    const auto r = static_resultants(*fe_space, p.materials, u, gravity, [&](const double z) {
+      return hydrostatic && z < level ? rho_g * (level - z) : 0.;
+    });
+    if (screen.is_active())
+      r.print(screen.get_stream());
+    for (const auto &[name, force] :
+         {std::pair{"weight", r.weight}, {"water", r.water}, {"from the rock", r.rock}})
+      for (unsigned int d = 0; d < dim; ++d)
+        summary.set(std::string("static/resultants on the dam [N]/") + name + "/" + "xyz"[d],
+                    force[d]);
+    summary.set("static/resultants on the dam [N]/out of balance", r.out_of_balance());
   }
 } // namespace archdam::analysis

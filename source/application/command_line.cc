@@ -2,6 +2,8 @@
 #include <archdam/application/command_line.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/run_stopped.h>
+#include <archdam/base/version.h>
+#include <archdam/output/run_lock.h>
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -52,9 +54,9 @@ namespace archdam
       "motion tool: archdam-motion --help.\n";
 
     std::string
-    version()
+    versions()
     {
-      return std::string("ArchDam ") + ARCHDAM_VERSION + "\ndeal.II " + DEAL_II_PACKAGE_VERSION +
+      return std::string("ArchDam ") + archdam::version() + "\ndeal.II " + DEAL_II_PACKAGE_VERSION +
              "\nPETSc " + std::to_string(PETSC_VERSION_MAJOR) + "." +
              std::to_string(PETSC_VERSION_MINOR) + "." + std::to_string(PETSC_VERSION_SUBMINOR) +
              "\nMUMPS " + MUMPS_VERSION + "\n";
@@ -82,7 +84,7 @@ namespace archdam
         }
       if (args[0] == "--version")
         {
-          out << version();
+          out << versions();
           return 0;
         }
       if (args[0] == "--print-parameters")
@@ -126,6 +128,7 @@ namespace archdam
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         for (const auto &w : p.warnings)
           say(warnings, "archdam: warning: ", w);
+      const output::RunLock lock(p.output.directory, p.analysis.case_name, MPI_COMM_WORLD);
       analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
       if (mesh_only)
         simulation.run_mesh_only();

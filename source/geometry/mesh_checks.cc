@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace archdam::geometry
@@ -83,6 +84,60 @@ namespace archdam::geometry
       }
   }
 
+  namespace
+  {
+    /// Dam blocks numbered 10, 11, ... without gaps.
+    void
+    check_dam_block_numbers(const Triangulation<dim> &conforming)
+    {
+      // Blocks 10, 11, ... without gaps, left to right (doc/theory/conventions.md):
+      // a Gmsh volume without a physical group is dropped when the file is
+      // saved, and leaves a hole between its neighbours that no later check
+      // would name.
+      std::set<unsigned int> blocks;
+      for (const auto &cell : conforming.active_cell_iterators())
+        if (ids::is_dam(cell->material_id()))
+          blocks.insert(cell->material_id() - ids::first_dam_block);
+      unsigned int expected = 0;
+      for (const unsigned int k : blocks)
+        {
+          if (k != expected)
+            throw InputError("Mesh: dam block " + std::to_string(expected) + " (material id " +
+                             std::to_string(ids::first_dam_block + expected) +
+                             ") is missing, but block " + std::to_string(k) +
+                             " is there: dam blocks are numbered 10, 11, ... without gaps, "
+                             "left to right. (Gmsh drops a volume without a physical group "
+                             "when it saves the mesh.)");
+          ++expected;
+        }
+    }
+
+    /// Each dam block k shares faces, its joint, with block k + 1.
+    void
+    check_dam_block_neighbours(const Triangulation<dim> &conforming)
+    {
+      unsigned int n_blocks = 0;
+      for (const auto &cell : conforming.active_cell_iterators())
+        if (ids::is_dam(cell->material_id()))
+          n_blocks = std::max<unsigned int>(n_blocks, cell->material_id() - ids::first_dam_block + 1);
+      std::vector<bool> joined(n_blocks == 0 ? 0 : n_blocks - 1, false);
+      for (const auto &cell : conforming.active_cell_iterators())
+        if (ids::is_dam(cell->material_id()))
+          for (const unsigned int f : cell->face_indices())
+            if (!cell->at_boundary(f) && cell->neighbor(f)->material_id() == cell->material_id() + 1)
+              joined[cell->material_id() - ids::first_dam_block] = true;
+      for (unsigned int k = 0; k < joined.size(); ++k)
+        if (!joined[k])
+          throw InputError("Mesh: dam blocks " + std::to_string(k) + " and " +
+                           std::to_string(k + 1) + " (material ids " +
+                           std::to_string(ids::first_dam_block + k) + " and " +
+                           std::to_string(ids::first_dam_block + k + 1) +
+                           ") share no face, so there is no joint between them: neighbouring "
+                           "blocks must meet in a conforming joint (is a block missing, or "
+                           "are the blocks not numbered left to right?).");
+    }
+  } // namespace
+
   void
   check_model_ids(const Triangulation<dim> &conforming)
   {
@@ -98,6 +153,8 @@ namespace archdam::geometry
             (m == 0 ? "; 0 is what a cell outside every physical volume of a Gmsh file gets." :
                       "."));
       }
+
+    check_dam_block_numbers(conforming);
 
     // boundary ids, and coincident boundary faces (a non-conforming mesh)
     std::map<std::array<long long, 12>, Triangulation<dim>::active_cell_iterator> faces;
@@ -156,5 +213,7 @@ namespace archdam::geometry
                 "solid). In Gmsh, make neighbouring volumes share their surfaces "
                 "(BooleanFragments, or Coherence).");
           }
+
+    check_dam_block_neighbours(conforming);
   }
 } // namespace archdam::geometry

@@ -119,10 +119,14 @@ namespace archdam::joints
   }
 
   std::vector<JointNodeCount>
-  count_joint_nodes(const std::vector<JointFacePair> &pairs, const unsigned int n_joints)
+  count_joint_nodes(const std::vector<JointFacePair> &pairs, const unsigned int n_joints,
+                    const unsigned int degree)
   {
-    std::vector<JointNodeCount>                      counts(n_joints);
+    std::vector<JointNodeCount>                                  counts(n_joints);
     std::vector<std::set<std::pair<unsigned int, unsigned int>>> node_pairs(n_joints);
+    // An edge of side 1 that is not also an edge of side 2 (one of its ends
+    // duplicated) carries degree - 1 node pairs inside it.
+    std::vector<std::set<unsigned int>> edges(n_joints);
     for (const auto &p : pairs)
       {
         ++counts[p.joint].faces;
@@ -132,9 +136,19 @@ namespace archdam::joints
             if (f1->vertex_index(v) != f2->vertex_index(w) &&
                 f1->vertex(v).distance(f2->vertex(w)) < 1e-12 * (1 + f1->vertex(v).norm()))
               node_pairs[p.joint].emplace(f1->vertex_index(v), f2->vertex_index(w));
+        for (const unsigned int l : f1->line_indices())
+          {
+            bool shared = false;
+            for (const unsigned int m : f2->line_indices())
+              shared = shared || f1->line_index(l) == f2->line_index(m);
+            if (!shared)
+              edges[p.joint].insert(f1->line_index(l));
+          }
       }
+    const unsigned int inner = degree - 1;
     for (unsigned int j = 0; j < n_joints; ++j)
-      counts[j].node_pairs = node_pairs[j].size();
+      counts[j].node_pairs = node_pairs[j].size() + inner * edges[j].size() +
+                             inner * inner * counts[j].faces;
     return counts;
   }
 

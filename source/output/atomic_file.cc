@@ -43,7 +43,7 @@ namespace archdam::output
   }
 
   void
-  write_hdf5(const std::string &filename, const std::function<void()> &write)
+  write_hdf5_file(const std::string &filename, const std::function<void()> &write)
   {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     errno = 0;

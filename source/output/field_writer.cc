@@ -151,7 +151,7 @@ namespace archdam::output
         DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(false, true));
         data_out.write_filtered_data(filter);
         const std::string h5 = "solution_" + Utilities::int_to_string(index, 5) + ".h5";
-        write_hdf5(temporary_name(p.directory + "/" + h5), [&] {
+        write_hdf5_file(temporary_name(p.directory + "/" + h5), [&] {
           data_out.write_hdf5_parallel(filter, temporary_name(p.directory + "/" + h5), space.comm);
         });
         on_rank_zero(space.comm, [&] { commit_temporary(p.directory + "/" + h5); });

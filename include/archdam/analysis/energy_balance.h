@@ -47,16 +47,31 @@ namespace archdam::analysis
     /// 1/rho_w int p^T H p dt: radiated at the upstream truncation and
     /// absorbed at the bottom.
     double water_radiated = 0.;
+    /// The scheme's own (algorithmic) dissipation of the solid's inertia,
+    /// the sum over the steps of [u]^T M <a> - [1/2 v^T M v]
+    ///   = dt^2 (Beta2 - Beta1/2) [a]^T M <a> - dt (Beta1 - 1/2) <v>^T M [a]
+    /// ([x] = x_{n+1} - x_n, <x> = (x_n + x_{n+1}) / 2;
+    /// doc/theory/time-integration.md §7): exactly 0 for the average
+    /// acceleration rule, and the energy Beta1 > 1/2 takes out of the high
+    /// frequencies otherwise.
+    double algorithmic = 0.;
 
     /// What the model holds or lost: everything but the input.
     double
     sum() const
     {
-      return kinetic + strain + damping + radiated + contact + water + water_radiated;
+      return kinetic + strain + damping + radiated + contact + water + water_radiated +
+             algorithmic;
     }
-    /// |input - sum| / max(|input|, sum of the magnitudes of the terms).
+    /// |input - sum| / max(|input|, sum of the magnitudes of the terms): what
+    /// no term accounts for.
     double
     balance_error() const;
+
+    /// A balance error above this is reported as a warning (the run's log
+    /// and summary.json): the results hold work that no term explains
+    /// (doc/user-guide.md, "Energy balance").
+    static constexpr double warning_threshold = 0.01;
   };
 
   /**
@@ -148,6 +163,17 @@ namespace archdam::analysis
     /// The reaction on the prescribed DOFs at the state @p s.
     void
     boundary_reaction(const time::NewmarkState &s, Vector &out);
+    /// Add the step's algorithmic dissipation (EnergyTerms::algorithmic) for
+    /// the new state @p s, the velocity @p v_old before the step and v_prev
+    /// after it.
+    void
+    add_algorithmic_dissipation(const time::NewmarkState &s, const Vector &v_old, double dt);
+    /// Whether the scheme dissipates (not the average acceleration rule).
+    bool
+    dissipative() const
+    {
+      return m.newmark.beta1 != 0.5 || m.newmark.beta2 != 0.25;
+    }
     const SparseMatrix *
     mass_columns() const
     {
@@ -170,6 +196,9 @@ namespace archdam::analysis
     Vector u_static, u_prev, v_prev, damping_prev, p_prev, impulse, boundary_prev,
       boundary_static, free_field_prev, free_field_static, radiation_prev, dashpot_prev, ub_prev,
       tmp, du, work;
+    /// The acceleration after the last step and M times it (algorithmic
+    /// dissipation); scratch for its means and jumps.
+    Vector a_prev, inertia_prev, mean, jump;
     dealii::Tensor<1, dim> ag_prev, vg;
     std::vector<double>    f_static, w_static, f_prev, w_prev;
     double                 t_prev = 0.;

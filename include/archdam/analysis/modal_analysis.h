@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/base/types.h>
+#include <archdam/parameters/analysis_parameters.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -11,17 +12,6 @@
 
 namespace archdam::analysis
 {
-  /// The `Modal analysis` subsection (doc/theory/loading-sequence.md §2).
-  struct ModalParameters
-  {
-    unsigned int n_modes          = 10;
-    double       tolerance        = 1e-10;
-    bool         write_mode_shapes = true;
-
-    void
-    add_parameters(dealii::ParameterHandler &prm);
-  };
-
   /// Natural modes, lowest first: K phi = omega^2 M phi, phi^T M phi = 1.
   struct NaturalModes
   {

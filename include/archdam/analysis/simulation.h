@@ -4,7 +4,7 @@
 #include <archdam/analysis/modal_analysis.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_faces.h>
-#include <archdam/joints/joint_output.h>
+#include <archdam/output/joint_output.h>
 #include <archdam/joints/joint_solver.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/output/checkpoint.h>
@@ -132,7 +132,7 @@ namespace archdam::analysis
     {
       return joint_solver.get();
     }
-    const joints::JointOutput *
+    const output::JointOutput *
     joint_histories() const
     {
       return joint_output.get();
@@ -157,9 +157,26 @@ namespace archdam::analysis
     run_modal_stage();
     void
     run_dynamic_stage();
+    /// The static stage's loads on the dam against the force of the rock
+    /// (static_resultants.h), on screen and in summary.json.
+    void
+    report_static_resultants();
     /// summary.json, and the peaks on screen.
     void
     write_summary();
+    /// The output directory and the result files in it, on screen.
+    void
+    say_where_results_are();
+    /// Say @p text on screen as a warning and keep it for summary.json
+    /// (warnings/...): what does not stop the run but may make its results
+    /// other than the user expects.
+    void
+    warn(const std::string &text);
+    /// Warnings about the ground motion against the dynamic stage ending at
+    /// @p end: a run past the end of its record, a generated motion cut while
+    /// still strong.
+    void
+    check_motion_duration(double end);
     /// Fields of the current state, and the stress peak over the dam.
     void
     write_fields();
@@ -263,11 +280,14 @@ namespace archdam::analysis
     output::Summary                          summary;
     std::unique_ptr<joints::NodePairs>       node_pairs;
     std::unique_ptr<joints::JointSolver>     joint_solver;
-    std::unique_ptr<joints::JointOutput>     joint_output;
+    std::unique_ptr<output::JointOutput>     joint_output;
     std::unique_ptr<EnergyBalance>           energy;
     /// Contact iterations per dynamic step: sum, maximum; flagged steps.
     unsigned long                            contact_iterations = 0;
     unsigned int                             max_contact_iterations = 0;
+    /// The largest contact iteration count since the last progress line.
+    unsigned int                             reported_contact_iterations = 0;
     std::vector<double>                      non_converged_times;
+    std::vector<std::string>                 warnings;
   };
 } // namespace archdam::analysis

@@ -35,6 +35,8 @@ namespace archdam::geometry
    * InputError naming the place:
    *  - material ids are 1 (rock), 2 (water) or 10 + k (dam block k, k < 90);
    *    any other (0: a cell outside every physical volume) has no material;
+   *  - the dam blocks are numbered 10, 11, ... without gaps and each block
+   *    shares faces (a joint) with the next;
    *  - a boundary face of a solid cell has id 0 (traction-free, also what a
    *    face outside every physical surface gets), 1 or 2; a boundary face of
    *    a water cell has id 3, 4 or 5: water has no default condition, so a

@@ -27,13 +27,17 @@ namespace archdam::joints
   std::vector<JointFacePair>
   pair_joint_faces(const dealii::Triangulation<dim> &tria);
 
-  /// The joint's node pairs: coincident mesh vertices of side 1 and side 2.
+  /// The joint's faces and node pairs: the coincident support points of side
+  /// 1 and side 2 of elements of @p degree that the analysis pairs (the
+  /// mesh vertices at degree 1; at degree 2 also each edge whose two sides
+  /// are different edges and each face centre), the number the run reports.
   struct JointNodeCount
   {
     unsigned int faces = 0, node_pairs = 0;
   };
   std::vector<JointNodeCount>
-  count_joint_nodes(const std::vector<JointFacePair> &pairs, unsigned int n_joints);
+  count_joint_nodes(const std::vector<JointFacePair> &pairs, unsigned int n_joints,
+                    unsigned int degree = 1);
 
   /**
    * Glued joints (`Contraction joints/Model = glued`): tie every displacement

@@ -51,5 +51,5 @@ namespace archdam::output
   /// library's own error stack kept quiet: a failure is one InputError,
   /// cannot_write()'s message.
   void
-  write_hdf5(const std::string &filename, const std::function<void()> &write);
+  write_hdf5_file(const std::string &filename, const std::function<void()> &write);
 } // namespace archdam::output

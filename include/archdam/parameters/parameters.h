@@ -1,7 +1,6 @@
 #pragma once
 
-#include <archdam/analysis/analysis_parameters.h>
-#include <archdam/analysis/modal_analysis.h>
+#include <archdam/parameters/analysis_parameters.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/geometry/mesh.h>
 #include <archdam/joints/joint_parameters.h>

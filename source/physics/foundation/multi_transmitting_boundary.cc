@@ -8,7 +8,9 @@
 #include <deal.II/grid/grid_tools_cache.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
+
 
 namespace archdam::physics::foundation
 {
@@ -59,6 +61,24 @@ namespace archdam::physics::foundation
           rock_vertices[cell->vertex_index(v)] = true;
     const auto in_rock = [&](const Point<dim> &x) {
       const auto found = GridTools::find_active_cell_around_point(cache, x);
+      if (found.first.state() == IteratorState::valid && found.first->material_id() != ids::rock)
+        {
+          // A point on a face the rock shares with a dam cell (the rock's
+          // top surface where the dam stands on it, reached along a side
+          // boundary flush with the dam's end face) lies in the rock's
+          // closure: a rock cell that touches the cell found holds it.
+          for (const auto v : found.first->vertex_indices())
+            for (const auto &cell : cache.get_vertex_to_cell_map()[found.first->vertex_index(v)])
+              if (cell->material_id() == ids::rock)
+                try
+                  {
+                    const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, x);
+                    if (GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-10))
+                      return std::make_pair(cell, unit);
+                  }
+                catch (const Mapping<dim>::ExcTransformationFailed &)
+                  {}
+        }
       if (found.first.state() == IteratorState::valid && found.first->material_id() != ids::rock)
         try
           {
@@ -133,8 +153,18 @@ namespace archdam::physics::foundation
               &space.dof_handler.get_triangulation(), found.first->level(),
               found.first->index(), &space.dof_handler);
             if (j == 1)
-              max_courant = std::max(max_courant, c_a * dt * space.degree /
-                                                    cell->minimum_vertex_distance());
+              {
+                // Liao's S = c_a dt / h with h the node spacing along the
+                // normal: the cell's extent along it over the degree (not its
+                // shortest edge, which in a flat cell lies across the normal).
+                double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+                for (const unsigned int v : cell->vertex_indices())
+                  {
+                    lowest  = std::min(lowest, cell->vertex(v) * b.normal);
+                    highest = std::max(highest, cell->vertex(v) * b.normal);
+                  }
+                max_courant = std::max(max_courant, c_a * dt * space.degree / (highest - lowest));
+              }
             std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
             cell->get_dof_indices(cell_dofs);
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)

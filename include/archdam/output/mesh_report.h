@@ -9,7 +9,7 @@
 #include <iosfwd>
 #include <vector>
 
-namespace archdam::geometry
+namespace archdam::output
 {
   /**
    * What the model mesh holds (issue "mesh report"), printed by every run and
@@ -32,7 +32,8 @@ namespace archdam::geometry
     /// Area of the dam faces against water: faces with id 7 (solid side of
     /// the fluid-solid interface) on dam cells [m^2].
     double wetted_area = 0.;
-    /// Per joint k: its faces and node pairs (duplicated vertices).
+    /// Per joint k: its faces and node pairs (the support-point pairs of the
+    /// analysis at the element degree, joints::count_joint_nodes()).
     std::vector<unsigned int> joint_faces, joint_node_pairs;
     /// The worst cell (mesh_checks.h): its scaled Jacobian, centre, material.
     double                     min_scaled_jacobian = 1.;
@@ -50,4 +51,4 @@ namespace archdam::geometry
   /// The report of a split model mesh for elements of polynomial @p degree.
   MeshReport
   make_mesh_report(const dealii::Triangulation<dim> &model, unsigned int degree);
-} // namespace archdam::geometry
+} // namespace archdam::output

@@ -1,7 +1,7 @@
 #include <archdam/base/binary_io.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
-#include <archdam/joints/joint_output.h>
+#include <archdam/output/joint_output.h>
 #include <archdam/output/atomic_file.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -12,11 +12,11 @@
 #include <map>
 #include <sstream>
 
-namespace archdam::joints
+namespace archdam::output
 {
   using namespace dealii;
 
-  JointOutput::JointOutput(const JointParameters &p, const NodePairs &pairs,
+  JointOutput::JointOutput(const joints::JointParameters &p, const joints::NodePairs &pairs,
                            const std::string &directory, const std::string &stage)
     : pairs(pairs)
     , directory(directory)
@@ -59,7 +59,7 @@ namespace archdam::joints
   }
 
   void
-  JointOutput::record(const double time, const JointSolver &joints)
+  JointOutput::record(const double time, const joints::JointSolver &joints)
   {
     std::vector<double> row{time};
     for (const unsigned int i : monitored)
@@ -95,7 +95,7 @@ namespace archdam::joints
   }
 
   void
-  JointOutput::write_fields(const double time, const JointSolver &joints)
+  JointOutput::write_fields(const double time, const joints::JointSolver &joints)
   {
     if (!writer)
       return;
@@ -196,4 +196,4 @@ namespace archdam::joints
                         pairs[peak_of[j]].position[d]);
         }
   }
-} // namespace archdam::joints
+} // namespace archdam::output

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace archdam::joints
+namespace archdam::output
 {
   /**
    * What the joints leave behind (doc/theory/results.md §2), written by rank 0 into the
@@ -27,15 +27,15 @@ namespace archdam::joints
   class JointOutput
   {
   public:
-    JointOutput(const JointParameters &p, const NodePairs &pairs, const std::string &directory,
+    JointOutput(const joints::JointParameters &p, const joints::NodePairs &pairs, const std::string &directory,
                 const std::string &stage);
 
     /// One row of histories, and the running envelopes.
     void
-    record(double time, const JointSolver &joints);
+    record(double time, const joints::JointSolver &joints);
     /// One VTU of the pair fields at @p time.
     void
-    write_fields(double time, const JointSolver &joints);
+    write_fields(double time, const joints::JointSolver &joints);
     /// Envelope files and the per-joint peaks into @p summary.
     void
     finish(output::Summary &summary) const;
@@ -66,7 +66,7 @@ namespace archdam::joints
     }
 
   private:
-    const NodePairs                 &pairs;
+    const joints::NodePairs                 &pairs;
     const std::string                directory, stage;
     const bool                       writer;
     std::vector<unsigned int>        monitored;
@@ -75,4 +75,4 @@ namespace archdam::joints
     std::vector<double>              peak_opening, peak_time;
     std::vector<std::pair<double, std::string>> pvd_records;
   };
-} // namespace archdam::joints
+} // namespace archdam::output

@@ -1,6 +1,6 @@
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh_checks.h>
-#include <archdam/geometry/mesh_report.h>
+#include <archdam/output/mesh_report.h>
 #include <archdam/joints/joint_faces.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -11,7 +11,7 @@
 #include <ostream>
 #include <set>
 
-namespace archdam::geometry
+namespace archdam::output
 {
   using namespace dealii;
 
@@ -76,7 +76,7 @@ namespace archdam::geometry
               cell->face(f)->boundary_id() == ids::solid_interface)
             r.wetted_area += face_area(cell->face(f));
 
-        const double q = scaled_jacobian(cell);
+        const double q = geometry::scaled_jacobian(cell);
         if (first || q < r.min_scaled_jacobian)
           {
             r.min_scaled_jacobian = q;
@@ -93,7 +93,7 @@ namespace archdam::geometry
     const auto   pairs    = joints::pair_joint_faces(model);
     for (const auto &p : pairs)
       n_joints = std::max(n_joints, p.joint + 1);
-    for (const auto &count : joints::count_joint_nodes(pairs, n_joints))
+    for (const auto &count : joints::count_joint_nodes(pairs, n_joints, degree))
       {
         r.joint_faces.push_back(count.faces);
         r.joint_node_pairs.push_back(count.node_pairs);
@@ -154,4 +154,4 @@ namespace archdam::geometry
     summary.set("mesh/minimum scaled Jacobian/material id", worst_cell_material);
     summary.set("mesh/minimum scaled Jacobian/region", region_of(worst_cell_material));
   }
-} // namespace archdam::geometry
+} // namespace archdam::output

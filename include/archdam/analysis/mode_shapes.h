@@ -5,7 +5,7 @@
 
 #include <string>
 
-namespace archdam::output
+namespace archdam::analysis
 {
   /**
    * The mode shapes of a modal stage for ParaView: one VTU piece set per mode
@@ -16,5 +16,5 @@ namespace archdam::output
    */
   void
   write_mode_shapes(const std::string &directory, const fe::FESpace &space,
-                    const analysis::NaturalModes &modes);
-} // namespace archdam::output
+                    const NaturalModes &modes);
+} // namespace archdam::analysis

@@ -1,18 +1,18 @@
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/output/atomic_file.h>
 #include <archdam/output/field_writer.h>
-#include <archdam/output/mode_shapes.h>
+#include <archdam/analysis/mode_shapes.h>
 
 #include <deal.II/numerics/data_out.h>
 
 
-namespace archdam::output
+namespace archdam::analysis
 {
   using namespace dealii;
 
   void
   write_mode_shapes(const std::string &directory, const fe::FESpace &space,
-                    const analysis::NaturalModes &modes)
+                    const NaturalModes &modes)
   {
     std::vector<std::string> names(dim, "mode_shape");
     names.emplace_back("mode_pressure");
@@ -38,12 +38,12 @@ namespace archdam::output
         data_out.add_data_vector(material, "material_id");
         data_out.build_patches(space.degree);
         records.emplace_back(k + 1,
-                             write_vtu_record(data_out, directory, "modes", k + 1, space.comm));
+                             output::write_vtu_record(data_out, directory, "modes", k + 1, space.comm));
       }
     on_rank_zero(space.comm, [&] {
-      write_atomically(directory + "/modes.pvd", [&](std::ostream &pvd) {
+      output::write_atomically(directory + "/modes.pvd", [&](std::ostream &pvd) {
         DataOutBase::write_pvd_record(pvd, records);
       });
     });
   }
-} // namespace archdam::output
+} // namespace archdam::analysis

@@ -1,4 +1,4 @@
-#include <archdam/analysis/analysis_parameters.h>
+#include <archdam/parameters/analysis_parameters.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -27,5 +27,20 @@ namespace archdam::analysis
       if (s == stage)
         return true;
     return false;
+  }
+
+  void
+  ModalParameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.add_parameter("Number of modes", n_modes,
+                      "How many of the lowest natural modes the modal stage computes.",
+                      Patterns::Integer(1, 1000));
+    prm.add_parameter("Tolerance", tolerance,
+                      "Relative tolerance of the eigensolver on each eigenpair.",
+                      Patterns::Double(1e-15, 1e-3));
+    prm.add_parameter("Write mode shapes", write_mode_shapes,
+                      "Write the mode shapes to modes.vtu (one displacement field per "
+                      "mode) in the output directory.",
+                      Patterns::Bool());
   }
 } // namespace archdam::analysis
