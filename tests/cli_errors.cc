@@ -3,6 +3,8 @@
 // show 2). Each case below is an input a user can really get wrong; the test
 // prints the exit code and the message as the user sees it.
 
+#include <cstdlib>
+
 #include "case_text.h"
 #include "command_line_tests.h"
 
@@ -47,8 +49,12 @@ main(int argc, char **argv)
   run_archdam("--set: no '='", {"good.prm", "--set", "Output/Progress"});
   run_archdam("--set: no section", {"good.prm", "--set", "Progress=true"});
   run_archdam("--set without argument", {"good.prm", "--set"});
+  // A fixed data folder: the message names every folder searched, and the
+  // default one is the source tree's, different on every machine.
+  setenv("ARCHDAM_DATA_DIR", "no_data_folder", 1);
   run_archdam("a missing ground-motion file",
       {"good.prm", "--set", "Ground motion/Component x/File=no_such_record.AT2"});
+  unsetenv("ARCHDAM_DATA_DIR");
   run_archdam("a monitor point outside the mesh",
               {"good.prm", "--set", "Monitors/Points=far: 0, 0, 1000"});
   run_archdam("an end time without ground motion",

@@ -1,13 +1,17 @@
 // Malformed ground-motion input: each case must throw archdam::InputError with
 // a message that names the file (and the line, where there is one) and the
 // problem. The files are written into the working directory and named
-// relatively, so that the messages are the same on every machine.
+// relatively, so that the messages are the same on every machine. The data
+// folder (ARCHDAM_DATA_DIR, base/data_files.h) is gm_data here: a relative
+// name is looked for in the case file's folder, then there, and the message
+// of a file in neither names both.
 
 #include <archdam/loads/ground_motion.h>
 #include <archdam/loads/record_io.h>
 
 #include <deal.II/base/mpi.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -66,8 +70,24 @@ main(int argc, char **argv)
   std::filesystem::create_directory("gm_folder.AT2");
   expect_input_error("a directory instead of a file",
                      [] { read_at2("gm_folder.AT2"); });
+  setenv("ARCHDAM_DATA_DIR", "gm_data", 1);
   expect_input_error("missing file, relative to base_directory", [] {
     ground_motion_x("gm_missing.AT2", "auto", "g", "gm_base");
+  });
+  expect_input_error("missing file, relative to the working directory", [] {
+    ground_motion_x("gm_missing.AT2", "auto", "g", "");
+  });
+  // Found in the data folder (read, and empty), and in the case file's
+  // folder first when both have it.
+  std::filesystem::create_directories("gm_data/ground_motions");
+  std::filesystem::create_directories("gm_base/ground_motions");
+  write("gm_data/ground_motions/gm_in_data.AT2", "");
+  expect_input_error("a file found in the data folder", [] {
+    ground_motion_x("ground_motions/gm_in_data.AT2", "auto", "g", "gm_base");
+  });
+  write("gm_base/ground_motions/gm_in_data.AT2", "");
+  expect_input_error("a file in the case folder and in the data folder", [] {
+    ground_motion_x("ground_motions/gm_in_data.AT2", "auto", "g", "gm_base");
   });
 
   std::cout << "\nEmpty files" << std::endl;

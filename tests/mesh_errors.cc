@@ -4,8 +4,9 @@
 // --mesh-only. The test prints the exit code and the message as the user sees
 // it; the reference is that every case gives exit code 1 and names the
 // problem, and that the unedited example passes (exit code 0).
-//  - files that cannot be read: missing, not a .msh (the .geo), truncated,
-//    binary, an unsupported version;
+//  - files that cannot be read: missing (in the case file's folder and in the
+//    data folder), not a .msh (the .geo, also one found in the data folder),
+//    truncated, binary, an unsupported version;
 //  - an inverted cell (a node moved through the cell), a tangled node order
 //    (a twisted cell overlapping its neighbours) and a degenerate cell;
 //  - a material id no material defines (5, and 0: a cell outside every
@@ -33,6 +34,8 @@
 #include "archdam_tests.h"
 #include "gmsh_example.h"
 
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -147,7 +150,14 @@ main(int argc, char **argv)
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   run("the example itself (accepted)", ex::v2);
+  // A fixed data folder (the default one differs between machines): a
+  // relative name is looked for next to the case file, then there.
+  setenv("ARCHDAM_DATA_DIR", "mesh_data", 1);
   run("missing file", "no_such_mesh.msh");
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::filesystem::create_directories("mesh_data");
+  write("mesh_data/in_data_folder.geo", read(ex::directory + "gmsh_blocks.geo"));
+  run("a file found in the data folder (the .geo script)", "in_data_folder.geo");
   write("script.geo", read(ex::directory + "gmsh_blocks.geo"));
   run("not a .msh file (the .geo script)", "script.geo");
   {

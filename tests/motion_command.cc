@@ -21,6 +21,7 @@
 #include <archdam/loads/record_processing.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -86,7 +87,10 @@ main(int argc, char **argv)
   run("scale without --pga", {"scale", pacoima, "--csv", "a.csv"});
   run("inspect without a file", {"inspect"});
   run("two input files", {"inspect", pacoima, pacoima});
+  // A fixed data folder: the default one differs between machines.
+  setenv("ARCHDAM_DATA_DIR", "motion_data", 1);
   run("missing input file", {"inspect", "no_such_record.AT2"});
+  unsetenv("ARCHDAM_DATA_DIR");
   run("--dt for an AT2 file", {"inspect", pacoima, "--dt", "0.01"});
   run("--tg without --pga", {"inspect", pacoima, "--tg", "0.4"});
   run("--table with --tg", {"generate", "--table", "0: 1; 1: 2", "--tg", "0.3"});

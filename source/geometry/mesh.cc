@@ -1,3 +1,4 @@
+#include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
 #include <archdam/geometry/gmsh_mesh.h>
 #include <archdam/geometry/ids.h>
@@ -7,7 +8,6 @@
 
 #include <deal.II/grid/grid_tools.h>
 
-#include <filesystem>
 #include <set>
 
 namespace archdam::geometry
@@ -31,7 +31,8 @@ namespace archdam::geometry
     prm.enter_subsection("Gmsh");
     prm.add_parameter("File", gmsh_file,
                       "The ASCII .msh file (format 2.x or 4.1, hexahedra) of Source = "
-                      "gmsh, relative to the case file's directory. Physical volumes "
+                      "gmsh. A relative path is looked for in the case file's folder, "
+                      "then in the data folder (doc/user-guide.md). Physical volumes "
                       "are material ids (1 rock, 2 water, 10 + k dam block k), physical "
                       "surfaces boundary ids (0-5); a solid face outside every physical "
                       "surface is traction-free (0).");
@@ -93,10 +94,7 @@ namespace archdam::geometry
       {
         if (p.gmsh_file.empty())
           throw InputError("Mesh/Gmsh/File: no file given for Mesh/Source = gmsh.");
-        const std::filesystem::path file(p.gmsh_file);
-        read_gmsh(file.is_absolute() ? file.string() :
-                                       (std::filesystem::path(base_directory) / file).string(),
-                  conforming);
+        read_gmsh(find_input_file(p.gmsh_file, base_directory, "Mesh/Gmsh/File"), conforming);
       }
     else
       generate_box(p.box, conforming);

@@ -1,3 +1,4 @@
+#include <archdam/base/data_files.h>
 #include <archdam/loads/ground_motion.h>
 
 #include <deal.II/base/exceptions.h>
@@ -83,8 +84,11 @@ namespace archdam::loads
           "File",
           c.file,
           "Acceleration record in the " + direction[d] +
-            " direction; empty means no ground motion in this direction; "
-            "a relative path starts at the folder of this parameter file.",
+            " direction; empty means no ground motion in this direction. A "
+            "relative path is looked for in the folder of this parameter "
+            "file, then in the data folder (ARCHDAM_DATA_DIR, else data/ of "
+            "the source tree), which holds the shipped records as "
+            "ground_motions/NAME.AT2 (doc/user-guide.md).",
           dealii::Patterns::FileName(dealii::Patterns::FileName::input));
         prm.add_parameter(
           "Format",
@@ -127,7 +131,6 @@ namespace archdam::loads
   GroundMotion::GroundMotion(const GroundMotionParameters &p,
                              const std::string            &base_directory)
   {
-    namespace fs = std::filesystem;
     for (unsigned int d = 0; d < 3; ++d)
       {
         const GroundMotionParameters::Component &c    = p.components[d];
@@ -155,10 +158,8 @@ namespace archdam::loads
           {
             if (c.file.empty())
               continue;
-            const std::string filename =
-              (base_directory.empty() || fs::path(c.file).is_absolute()) ?
-                c.file :
-                (fs::path(base_directory) / c.file).string();
+            const std::string filename = find_input_file(
+              c.file, base_directory, "Ground motion/Component " + axis + "/File");
             context = "Ground motion, Component " + axis + ", file '" +
                       filename + "': ";
             records[d] = read_component(c, filename, context);

@@ -1,4 +1,5 @@
 #include <archdam/base/case_file.h>
+#include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/design_spectrum.h>
@@ -45,7 +46,9 @@ and displacement, Arias intensity, significant duration, spectral values).
 `case` shows a ground-motion component of an analysis case file as the
 analysis uses it (read or generated, then processed). Accelerations in g.
 
-Input options (INPUT is a record file):
+Input options (INPUT is a record file; a relative name is looked for in the
+working directory, then in the data folder, ARCHDAM_DATA_DIR or the shipped
+data/: ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2 is a shipped record):
   --format F          auto | AT2 | two-column | single-column (default auto:
                       AT2 if the name ends in .AT2, else two-column)
   --units U           g | m/s^2 | cm/s^2, for text files (default g)
@@ -334,7 +337,9 @@ Errors in the input give one message and exit code 1.
     read_input(const Options &o, const std::string &path)
     {
       GroundMotionParameters::Component c;
-      c.file      = path;
+      // A relative INPUT is looked for in the working directory, then in the
+      // data folder, as a case file's records are (base/data_files.h).
+      c.file      = find_input_file(path, "", "INPUT", "the working directory");
       c.format    = o.text("--format", "auto");
       c.units     = o.text("--units", "g");
       c.time_step = o.number("--dt", 0.);

@@ -39,8 +39,9 @@ namespace archdam::geometry
 
   /**
    * The whole model, water included, as a serial mesh: generate or read the
-   * conforming mesh (relative Gmsh file names are resolved against
-   * @p base_directory), check its cell shapes and ids (mesh_checks.h) and
+   * conforming mesh (a relative Gmsh file name is looked for in
+   * @p base_directory, then in the data folder: find_input_file(),
+   * base/data_files.h), check its cell shapes and ids (mesh_checks.h) and
    * split joints and fluid-solid interfaces (splitter.h).
    */
   void

@@ -78,9 +78,11 @@ namespace archdam::loads
     /**
      * Read every component that names a file and generate every component
      * with Source = generated; then apply the scale factor and the
-     * processing. Relative file names are resolved against @p base_directory
-     * (the directory of the prm file); "" means the current working
-     * directory. InputError for every problem, naming the component.
+     * processing. Relative file names are looked for in @p base_directory
+     * (the directory of the prm file; "" means the current working
+     * directory), then in the data folder (find_input_file(),
+     * base/data_files.h). InputError for every problem, naming the
+     * component.
      */
     GroundMotion(const GroundMotionParameters &p,
                  const std::string            &base_directory);
