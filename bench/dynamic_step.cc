@@ -98,7 +98,7 @@ main(int argc, char **argv)
   std::string  size_name = "large";
   unsigned int n_steps = 8, n_rounds = 5;
   bool         dofs_only = false;
-  std::string  record = "/work/shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2";
+  std::string  record = "ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2";
   for (int i = 1; i < argc; ++i)
     {
       const std::string a = argv[i];

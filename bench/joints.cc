@@ -88,7 +88,7 @@ namespace
         << "subsection Time integration\n set Time step = 0.01\n set End time = "
         << 0.01 * steps << "\nend\n"
         << "subsection Ground motion\n subsection Component x\n  set File = "
-        << "/work/shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2\n"
+        << "ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2\n"
         << "  set Scale factor = 2\n end\nend\n"
         << "subsection Output\n set Directory = bench_joints_output\n"
         << " set Field output interval = 0\n set Progress = false\n"

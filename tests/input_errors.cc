@@ -119,6 +119,27 @@ main(int argc, char **argv)
       {"good.prm", "--set", "Mesh/Source=gmsh", "--set", blocks, "--set",
        "Reservoir/Model=compressible", "--set", "Reservoir/Pressure points=dry: 5, 5, 5"});
 
+  // A full disk: the device /dev/full, on which every write fails with "no
+  // space left on device", in place of a result file. One line with the file
+  // and the system's reason.
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    for (const auto &[directory, file] :
+         {std::pair{"full_histories", "histories.csv"}, {"full_vtu", "solution_00000.0.vtu.tmp"},
+          {"full_hdf5", "solution_00000.h5.tmp"}})
+      {
+        std::filesystem::remove_all(directory);
+        std::filesystem::create_directories(directory);
+        std::filesystem::create_symlink("/dev/full", std::string(directory) + "/" + file);
+      }
+  MPI_Barrier(MPI_COMM_WORLD);
+  run_set("histories.csv on a full disk", "Output/Directory=full_histories");
+  run_archdam("a VTU piece on a full disk",
+              {"good.prm", "--set", "Output/Directory=full_vtu", "--set",
+               "Output/Field output interval=1", "--set", "Output/Field formats=vtu"});
+  run_archdam("an HDF5 field file on a full disk",
+              {"good.prm", "--set", "Output/Directory=full_hdf5", "--set",
+               "Output/Field output interval=1", "--set", "Output/Field formats=hdf5"});
+
   // Result files that cannot be written (a directory in the way)
   run_set("a directory where histories.csv goes", "Output/Directory=blocked_histories");
   run_set("a directory where summary.json goes", "Output/Directory=blocked_summary");

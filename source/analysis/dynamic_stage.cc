@@ -115,6 +115,8 @@ namespace archdam::analysis
 
     const auto rayleigh = p.damping.rayleigh_coefficients();
     std::unique_ptr<time::NewmarkIntegrator> newmark;
+    screen << "Dynamic stage: factorizing the effective matrix (" << fe_space->dof_handler.n_dofs()
+           << " DOFs)" << std::endl;
     {
       TimerOutput::Scope t(timer, "dynamic: factorization");
       if (fluid_operators)
@@ -140,6 +142,8 @@ namespace archdam::analysis
           p.time_integration, mass_matrix, stiffness_matrix, rayleigh, fe_space->constraints,
           massed_foundation ? massed_foundation->dashpots() : nullptr, condensed_interface());
     }
+    screen << "  factors: " << std::setprecision(4) << newmark->effective_factor().factor_entries()
+           << " entries" << std::endl;
     if (node_pairs)
       start_dynamic_joints(*newmark);
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
@@ -295,11 +299,14 @@ namespace archdam::analysis
     stress_envelope->write(p.output.directory, summary);
     energy->add_to(summary);
     screen << energy->line() << std::endl;
-    if (const double error = energy->terms().balance_error();
-        error > EnergyTerms::warning_threshold)
+    // (Without input work, from rest, every term is round-off and so is
+    // their ratio: nothing to say.)
+    if (const auto terms = energy->terms();
+        terms.input != 0. && terms.balance_error() > EnergyTerms::warning_threshold)
       {
         std::ostringstream text;
-        text << std::setprecision(2) << "the energy balance closes only to " << error
+        text << std::setprecision(2) << "the energy balance closes only to "
+             << terms.balance_error()
              << ", more than " << EnergyTerms::warning_threshold
              << ": some work is accounted for by no term (doc/user-guide.md, \"Energy "
                 "balance\").";

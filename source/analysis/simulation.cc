@@ -76,6 +76,7 @@ namespace archdam::analysis
   void
   Simulation::build_mesh(Triangulation<dim> &model)
   {
+    screen << "Building the mesh (Mesh/Source = " << p.mesh.source << ")" << std::endl;
     geometry::build_model_mesh(p.mesh, p.base_directory, model);
     const auto report = output::make_mesh_report(model, p.finite_element.degree);
     if (screen.is_active())

@@ -17,7 +17,7 @@ namespace archdam::analysis
   StaticResultants::out_of_balance() const
   {
     const double scale = weight.norm() + water.norm();
-    return scale > 0 ? (weight + water + rock).norm() / scale : 0.;
+    return scale > 0 ? (weight + water + support).norm() / scale : 0.;
   }
 
   void
@@ -25,7 +25,7 @@ namespace archdam::analysis
   {
     // Components below round-off of the largest force are printed as 0: they
     // differ with the order of the sums (the number of MPI processes).
-    const double scale = std::max({weight.norm(), water.norm(), rock.norm()});
+    const double scale = std::max({weight.norm(), water.norm(), support.norm()});
     const auto   mn    = [&](const char *name, const Tensor<1, dim> &f) {
       out << "  " << std::left << std::setw(14) << name << std::right << std::setprecision(6);
       for (unsigned int d = 0; d < dim; ++d)
@@ -35,7 +35,7 @@ namespace archdam::analysis
     out << "Static resultants on the dam [MN]:        x             y             z\n";
     mn("weight", weight);
     mn("water", water);
-    mn("from the rock", rock);
+    mn("support", support);
     out << "  out of balance ";
     if (out_of_balance() < 1e-9)
       out << "below 1e-9";
@@ -73,8 +73,13 @@ namespace archdam::analysis
               const auto face     = cell->face(f);
               const bool wetted   = face->at_boundary() &&
                                   face->boundary_id() == ids::solid_interface;
-              const bool on_rock  = !face->at_boundary() &&
-                                   cell->neighbor(f)->material_id() == ids::rock;
+              // The support: the rock, or where no rock is meshed under the
+              // dam the fixed truncation itself.
+              const bool on_rock =
+                face->at_boundary() ?
+                  (face->boundary_id() == ids::foundation_bottom ||
+                   face->boundary_id() == ids::foundation_sides) :
+                  cell->neighbor(f)->material_id() == ids::rock;
               if (!wetted && !on_rock)
                 continue;
               face_values.reinit(cell, f);
@@ -87,11 +92,11 @@ namespace archdam::analysis
                     r.water -= pressure(face_values.quadrature_point(q)[dim - 1]) * n *
                                face_values.JxW(q);
                   else
-                    r.rock += material.stress(symmetrize(gradients[q])) * n * face_values.JxW(q);
+                    r.support += material.stress(symmetrize(gradients[q])) * n * face_values.JxW(q);
                 }
             }
         }
-    for (Tensor<1, dim> *f : {&r.weight, &r.water, &r.rock})
+    for (Tensor<1, dim> *f : {&r.weight, &r.water, &r.support})
       *f = Utilities::MPI::sum(*f, space.comm);
     return r;
   }

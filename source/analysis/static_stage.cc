@@ -27,8 +27,12 @@ namespace archdam::analysis
                                                             {1., &fluid_operators->Q},
                                                             {1., &fluid_operators->G}});
       const SparseMatrix      &K = fluid_operators ? with_water : stiffness_matrix;
+      screen << "Static stage: factorizing K (" << fe_space->dof_handler.n_dofs() << " DOFs)"
+             << std::endl;
       time::FactorizedOperator stiffness_factor;
       stiffness_factor.factorize(K, true, condensed_interface());
+      screen << "  factors: " << std::setprecision(4) << stiffness_factor.factor_entries()
+             << " entries" << std::endl;
       Vector rhs = static_load;
       fe_space->constraints.set_zero(rhs);
       if (node_pairs)
@@ -76,7 +80,7 @@ namespace archdam::analysis
     if (screen.is_active())
       r.print(screen.get_stream());
     for (const auto &[name, force] :
-         {std::pair{"weight", r.weight}, {"water", r.water}, {"from the rock", r.rock}})
+         {std::pair{"weight", r.weight}, {"water", r.water}, {"support", r.support}})
       for (unsigned int d = 0; d < dim; ++d)
         summary.set(std::string("static/resultants on the dam [N]/") + name + "/" + "xyz"[d],
                     force[d]);

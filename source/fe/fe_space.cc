@@ -96,4 +96,37 @@ namespace archdam::fe
   {
     vector.reinit(locally_owned, locally_relevant, comm);
   }
+
+  AffineConstraints<double>
+  constraints_without(const FESpace &space, const std::vector<bool> &excluded)
+  {
+    AffineConstraints<double> others(space.locally_relevant);
+    for (const auto &line : space.constraints.get_lines())
+      if (!excluded[line.index])
+        {
+          others.add_line(line.index);
+          others.add_entries(line.index, line.entries);
+          others.set_inhomogeneity(line.index, line.inhomogeneity);
+        }
+    others.close();
+    return others;
+  }
+
+  void
+  visit_owned_cell_dofs(
+    const FESpace &space,
+    const std::function<bool(const DoFHandler<dim>::active_cell_iterator &, unsigned int,
+                             types::global_dof_index)> &visit)
+  {
+    std::vector<types::global_dof_index> dofs;
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          dofs.resize(cell->get_fe().n_dofs_per_cell());
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (visit(cell, i, dofs[i]))
+              return;
+        }
+  }
 } // namespace archdam::fe

@@ -1,3 +1,4 @@
+#include <archdam/base/number_text.h>
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/fft.h>
 #include <archdam/loads/record_io.h>
@@ -20,14 +21,6 @@ namespace archdam::loads
 {
   namespace
   {
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
     /**
      * A uniform number in [0, 1) with 53 random bits from two 32-bit draws
      * of std::mt19937 (genrand_res53 of Matsumoto & Nishimura's reference
@@ -49,33 +42,33 @@ namespace archdam::loads
         throw InputError("Generated motion: " + message);
       };
       if (!(s.time_step > 0) || !std::isfinite(s.time_step))
-        fail("Time step must be positive, it is " + str(s.time_step) + " s.");
+        fail("Time step must be positive, it is " + number_text(s.time_step) + " s.");
       if (!(s.duration >= 10 * s.time_step) || !std::isfinite(s.duration))
-        fail("Duration (" + str(s.duration) +
-             " s) must be at least 10 time steps (" + str(10 * s.time_step) +
+        fail("Duration (" + number_text(s.duration) +
+             " s) must be at least 10 time steps (" + number_text(10 * s.time_step) +
              " s).");
       const IntensityEnvelope &e = s.envelope;
       if (!(e.rise_end >= 0) || !(e.strong_end >= e.rise_end) ||
           !(e.strong_end <= s.duration))
         fail("the envelope needs 0 <= Rise time <= Strong motion end <= "
              "Duration, it has " +
-             str(e.rise_end) + " s, " + str(e.strong_end) + " s, " +
-             str(s.duration) + " s.");
+             number_text(e.rise_end) + " s, " + number_text(e.strong_end) + " s, " +
+             number_text(s.duration) + " s.");
       if (!(e.decay >= 0) || !std::isfinite(e.decay))
-        fail("Decay coefficient must be at least 0, it is " + str(e.decay) +
+        fail("Decay coefficient must be at least 0, it is " + number_text(e.decay) +
              " 1/s.");
       if (!(s.damping >= 0 && s.damping < 1))
         fail("Damping ratio must be at least 0 and below 1, it is " +
-             str(s.damping) + ".");
+             number_text(s.damping) + ".");
       if (!(s.period_min >= 3 * s.time_step))
-        fail("the shortest matched period (" + str(s.period_min) +
-             " s) must be at least 3 time steps (" + str(3 * s.time_step) +
+        fail("the shortest matched period (" + number_text(s.period_min) +
+             " s) must be at least 3 time steps (" + number_text(3 * s.time_step) +
              " s): shorter periods are above the frequencies the time step "
              "can carry.");
       if (!(s.period_max > s.period_min) || !(s.period_max <= s.duration / 2))
-        fail("the longest matched period (" + str(s.period_max) +
-             " s) must be longer than the shortest (" + str(s.period_min) +
-             " s) and at most half the duration (" + str(s.duration / 2) +
+        fail("the longest matched period (" + number_text(s.period_max) +
+             " s) must be longer than the shortest (" + number_text(s.period_min) +
+             " s) and at most half the duration (" + number_text(s.duration / 2) +
              " s).");
       if (s.n_periods < 2)
         fail("at least 2 matched periods are needed.");

@@ -1,6 +1,9 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/number_text.h>
 #include <archdam/loads/design_spectrum.h>
 #include <archdam/loads/record_io.h>
+
+#include <deal.II/base/utilities.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,27 +13,6 @@
 
 namespace archdam::loads
 {
-  namespace
-  {
-    std::string
-    format_number(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
-    std::string
-    trim(const std::string &s)
-    {
-      const auto b = s.find_first_not_of(" \t\r\n");
-      if (b == std::string::npos)
-        return "";
-      const auto e = s.find_last_not_of(" \t\r\n");
-      return s.substr(b, e - b + 1);
-    }
-  } // namespace
-
 
 
   TargetSpectrum
@@ -41,15 +23,15 @@ namespace archdam::loads
     if (!(pga > 0) || !std::isfinite(pga))
       throw InputError("Design spectrum: the peak ground acceleration must be "
                        "positive, it is " +
-                       format_number(pga / standard_gravity) + " g.");
+                       number_text(pga / standard_gravity) + " g.");
     if (!(characteristic_period >= 0.1) || !std::isfinite(characteristic_period))
       throw InputError("Design spectrum: the characteristic period T_g must be "
                        "at least 0.1 s (the end of the rising branch), it is " +
-                       format_number(characteristic_period) + " s.");
+                       number_text(characteristic_period) + " s.");
     if (!(beta_max >= 1) || !std::isfinite(beta_max))
       throw InputError("Design spectrum: the maximum amplification beta_max "
                        "must be at least 1, it is " +
-                       format_number(beta_max) + ".");
+                       number_text(beta_max) + ".");
     TargetSpectrum s;
     s.peak    = pga;
     s.t_g     = characteristic_period;
@@ -66,7 +48,7 @@ namespace archdam::loads
     if (!(pga > 0) || !std::isfinite(pga))
       throw InputError("Spectrum table: the peak ground acceleration must be "
                        "positive, it is " +
-                       format_number(pga / standard_gravity) + " g.");
+                       number_text(pga / standard_gravity) + " g.");
     if (points.size() < 2)
       throw InputError("Spectrum table: it needs at least 2 points (T: beta), "
                        "it has " +
@@ -76,16 +58,16 @@ namespace archdam::loads
         const auto [T, beta] = points[i];
         if (!(T >= 0) || !std::isfinite(T))
           throw InputError("Spectrum table: point " + std::to_string(i + 1) +
-                           " has period " + format_number(T) +
+                           " has period " + number_text(T) +
                            " s; periods must be at least 0.");
         if (i > 0 && !(T > points[i - 1].first))
           throw InputError("Spectrum table: point " + std::to_string(i + 1) +
-                           " has period " + format_number(T) +
+                           " has period " + number_text(T) +
                            " s, not larger than the previous one; periods "
                            "must increase strictly.");
         if (!(beta > 0) || !std::isfinite(beta))
           throw InputError("Spectrum table: point " + std::to_string(i + 1) +
-                           " has beta = " + format_number(beta) +
+                           " has beta = " + number_text(beta) +
                            "; beta must be positive.");
       }
     TargetSpectrum s;
@@ -189,12 +171,12 @@ namespace archdam::loads
     for (std::string entry; std::getline(entries, entry, ';');)
       {
         ++n;
-        entry = trim(entry);
+        entry = dealii::Utilities::trim(entry);
         if (entry.empty())
           continue;
         const auto colon = entry.find(':');
         const auto read  = [&](const std::string &word, double &x) {
-          const std::string w   = trim(word);
+          const std::string w   = dealii::Utilities::trim(word);
           char             *end = nullptr;
           x                     = std::strtod(w.c_str(), &end);
           return !w.empty() && *end == '\0' && std::isfinite(x);

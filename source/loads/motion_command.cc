@@ -1,6 +1,7 @@
 #include <archdam/base/case_file.h>
 #include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/number_text.h>
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/design_spectrum.h>
 #include <archdam/loads/ground_motion.h>
@@ -130,13 +131,11 @@ Errors in the input give one message and exit code 1.
                                                 "--png",      "--spectrum-damping",
                                                 "--title"};
 
+    /// Numbers in this command's reports: 4 significant digits.
     std::string
     str(const double x, const int digits = 4)
     {
-      std::ostringstream s;
-      s.precision(digits);
-      s << x;
-      return s.str();
+      return number_text(x, digits);
     }
 
     /// The parsed command line.

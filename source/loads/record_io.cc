@@ -1,3 +1,4 @@
+#include <archdam/base/number_text.h>
 #include <archdam/loads/record_io.h>
 
 #include <deal.II/base/exceptions.h>
@@ -9,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <optional>
 #include <sstream>
 
@@ -16,15 +18,6 @@ namespace archdam::loads
 {
   namespace
   {
-    /// @p x as the shortest text that reads back (up to 6 digits).
-    std::string
-    format_number(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
     /// Start of every error message: the file, and the line if there is one.
     std::string
     where(const std::string &filename, const unsigned int line = 0)
@@ -82,6 +75,34 @@ namespace archdam::loads
       for (std::string word; words >> word;)
         result.push_back(word);
       return result;
+    }
+
+    /// Call @p row with the words and the number of each data line of a
+    /// text record read from @p in (words separated by commas or blanks;
+    /// blank lines and lines starting with '#' skipped). A line with other
+    /// than @p columns words is an InputError naming the line, what the
+    /// columns hold (@p what) and @p hint; a read error is one too.
+    void
+    for_each_data_line(
+      std::istream &in, const std::string &filename, const unsigned int columns,
+      const std::string &what, const std::string &hint,
+      const std::function<void(const std::vector<std::string> &, unsigned int)> &row)
+    {
+      std::string  line;
+      unsigned int line_number = 0;
+      while (std::getline(in, line))
+        {
+          ++line_number;
+          const std::vector<std::string> words = split(line, ",");
+          if (words.empty() || words[0][0] == '#')
+            continue;
+          if (words.size() != columns)
+            throw InputError(where(filename, line_number) + "expected " +
+                             std::to_string(columns) + (columns == 1 ? " column (" : " columns (") +
+                             what + "), found " + std::to_string(words.size()) + hint + ".");
+          row(words, line_number);
+        }
+      check_read_to_end(in, filename, line_number);
     }
 
     /// @p word as a finite real number, if all of it is one. strtod reads the
@@ -250,28 +271,17 @@ namespace archdam::loads
 
     AccelerationRecord record;
     record.source = filename;
-    std::string  line;
-    unsigned int line_number = 0;
-    while (std::getline(in, line))
-      {
-        ++line_number;
-        const std::vector<std::string> words = split(line, ",");
-        if (words.empty() || words[0][0] == '#')
-          continue;
-        if (words.size() != 2)
-          throw InputError(where(filename, line_number) +
-                           "expected 2 columns (time, acceleration), found " +
-                           std::to_string(words.size()) + ".");
-        const double t = number(words[0], filename, line_number);
-        const double a = number(words[1], filename, line_number, to_si * scale);
-        if (!record.times.empty() && t <= record.times.back())
-          throw InputError(where(filename, line_number) + "time " + words[0] +
-                           " s is not later than the time on the previous "
-                           "data line; times must increase strictly.");
-        record.times.push_back(t);
-        record.values.push_back(a);
-      }
-    check_read_to_end(in, filename, line_number);
+    for_each_data_line(in, filename, 2, "time, acceleration", "",
+                       [&](const std::vector<std::string> &words, const unsigned int line_number) {
+                         const double t = number(words[0], filename, line_number);
+                         const double a = number(words[1], filename, line_number, to_si * scale);
+                         if (!record.times.empty() && t <= record.times.back())
+                           throw InputError(where(filename, line_number) + "time " + words[0] +
+                                            " s is not later than the time on the previous "
+                                            "data line; times must increase strictly.");
+                         record.times.push_back(t);
+                         record.values.push_back(a);
+                       });
     if (record.times.size() < 2)
       throw InputError(where(filename) + "found " +
                        std::to_string(record.times.size()) +
@@ -304,27 +314,16 @@ namespace archdam::loads
     if (!(dt > 0) || !std::isfinite(dt))
       throw InputError(where(filename) + "the time step of a single-column "
                        "file must be positive, it is " +
-                       format_number(dt) + " s.");
+                       number_text(dt) + " s.");
     check_not_empty(in, filename);
 
     std::vector<double> values;
-    std::string         line;
-    unsigned int        line_number = 0;
-    while (std::getline(in, line))
-      {
-        ++line_number;
-        const std::vector<std::string> words = split(line, ",");
-        if (words.empty() || words[0][0] == '#')
-          continue;
-        if (words.size() != 1)
-          throw InputError(where(filename, line_number) +
-                           "expected 1 column (acceleration), found " +
-                           std::to_string(words.size()) +
-                           "; a file of time-acceleration pairs needs "
-                           "Format = two-column.");
-        values.push_back(number(words[0], filename, line_number, to_si * scale));
-      }
-    check_read_to_end(in, filename, line_number);
+    for_each_data_line(in, filename, 1, "acceleration",
+                       "; a file of time-acceleration pairs needs Format = two-column",
+                       [&](const std::vector<std::string> &words, const unsigned int line_number) {
+                         values.push_back(
+                           number(words[0], filename, line_number, to_si * scale));
+                       });
     if (values.size() < 2)
       throw InputError(where(filename) + "found " +
                        std::to_string(values.size()) +
@@ -363,7 +362,7 @@ namespace archdam::loads
     if (std::abs(record.times.front()) > 1e-9 * dt)
       throw InputError("Cannot write '" + filename +
                        "': an AT2 record starts at t = 0, this one at t = " +
-                       format_number(record.times.front()) +
+                       number_text(record.times.front()) +
                        " s; cut a time window first.");
     std::ofstream out(filename);
     if (!out)

@@ -1,3 +1,4 @@
+#include <archdam/base/number_text.h>
 #include <archdam/loads/fft.h>
 #include <archdam/loads/record_io.h>
 #include <archdam/loads/record_processing.h>
@@ -15,14 +16,6 @@ namespace archdam::loads
 {
   namespace
   {
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
     void
     check_samples(const AccelerationRecord &record, const std::string &what)
     {
@@ -74,7 +67,7 @@ namespace archdam::loads
   {
     if (!(pga > 0) || !std::isfinite(pga))
       throw InputError("Scaling: the target PGA must be positive, it is " +
-                       str(pga / standard_gravity) + " g.");
+                       number_text(pga / standard_gravity) + " g.");
     const double peak = record.peak();
     if (!(peak > 0))
       throw InputError("Scaling: the record is zero everywhere; it cannot be "
@@ -99,18 +92,18 @@ namespace archdam::loads
     const double end        = (end_in == 0.) ? record_end : end_in;
     if (!(start >= 0) || !std::isfinite(start))
       throw InputError("Time window: Start time must be at least 0, it is " +
-                       str(start) + " s.");
+                       number_text(start) + " s.");
     if (end > record_end * (1 + 1e-12))
-      throw InputError("Time window: End time " + str(end) +
-                       " s is after the end of the record (" + str(record_end) +
+      throw InputError("Time window: End time " + number_text(end) +
+                       " s is after the end of the record (" + number_text(record_end) +
                        " s).");
     if (!(end > start))
-      throw InputError("Time window: End time (" + str(end) +
-                       " s) must be after Start time (" + str(start) + " s).");
+      throw InputError("Time window: End time (" + number_text(end) +
+                       " s) must be after Start time (" + number_text(start) + " s).");
     if (!(taper >= 0) || 2. * taper > end - start)
-      throw InputError("Time window: Taper length " + str(taper) +
+      throw InputError("Time window: Taper length " + number_text(taper) +
                        " s must be between 0 and half the window (" +
-                       str(0.5 * (end - start)) + " s).");
+                       number_text(0.5 * (end - start)) + " s).");
 
     AccelerationRecord window;
     window.source = record.source;
@@ -140,8 +133,8 @@ namespace archdam::loads
         window.values.push_back(record.value(std::min(end, record_end)));
       }
     if (window.times.size() < 2)
-      throw InputError("Time window: the window from " + str(start) + " s to " +
-                       str(end) + " s holds fewer than 2 samples.");
+      throw InputError("Time window: the window from " + number_text(start) + " s to " +
+                       number_text(end) + " s holds fewer than 2 samples.");
 
     if (taper > 0)
       {
@@ -164,11 +157,11 @@ namespace archdam::loads
     check_samples(record, "Resampling");
     if (!(dt > 0) || !std::isfinite(dt))
       throw InputError("Resampling: the time step must be positive, it is " +
-                       str(dt) + " s.");
+                       number_text(dt) + " s.");
     if (dt > record.times.back() - record.times.front())
-      throw InputError("Resampling: the time step " + str(dt) +
+      throw InputError("Resampling: the time step " + number_text(dt) +
                        " s is longer than the record (" +
-                       str(record.times.back() - record.times.front()) + " s).");
+                       number_text(record.times.back() - record.times.front()) + " s).");
 
     double old_dt  = 0.;
     const bool uniform = record.is_uniform(&old_dt);
@@ -205,16 +198,16 @@ namespace archdam::loads
       throw InputError("Filter: corner frequencies must be at least 0 (0 = no "
                        "filter).");
     if (low_pass >= nyquist)
-      throw InputError("Filter: the low-pass corner " + str(low_pass) +
+      throw InputError("Filter: the low-pass corner " + number_text(low_pass) +
                        " Hz must be below the Nyquist frequency 1/(2 dt) = " +
-                       str(nyquist) + " Hz.");
+                       number_text(nyquist) + " Hz.");
     if (high_pass >= nyquist)
-      throw InputError("Filter: the high-pass corner " + str(high_pass) +
+      throw InputError("Filter: the high-pass corner " + number_text(high_pass) +
                        " Hz must be below the Nyquist frequency 1/(2 dt) = " +
-                       str(nyquist) + " Hz.");
+                       number_text(nyquist) + " Hz.");
     if (low_pass > 0 && high_pass >= low_pass)
-      throw InputError("Filter: the high-pass corner " + str(high_pass) +
-                       " Hz must be below the low-pass corner " + str(low_pass) +
+      throw InputError("Filter: the high-pass corner " + number_text(high_pass) +
+                       " Hz must be below the low-pass corner " + number_text(low_pass) +
                        " Hz.");
     if (order < 1 || order > 10)
       throw InputError("Filter: the order must be from 1 to 10, it is " +

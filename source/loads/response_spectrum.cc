@@ -1,4 +1,5 @@
 #include <archdam/base/input_error.h>
+#include <archdam/base/number_text.h>
 #include <archdam/loads/response_spectrum.h>
 
 #include <deal.II/base/exceptions.h>
@@ -59,25 +60,17 @@ namespace archdam::loads
       }
     };
 
-    std::string
-    str(const double x)
-    {
-      std::ostringstream s;
-      s << x;
-      return s.str();
-    }
-
     void
     check_oscillator(const double period, const double damping)
     {
       if (!(period > 0) || !std::isfinite(period))
         throw InputError("Response spectrum: the period must be positive, "
                          "it is " +
-                         str(period) + " s.");
+                         number_text(period) + " s.");
       if (!(damping >= 0 && damping < 1))
         throw InputError("Response spectrum: the damping ratio must be at "
                          "least 0 and below 1, it is " +
-                         str(damping) + ".");
+                         number_text(damping) + ".");
     }
 
     void

@@ -234,4 +234,12 @@ namespace archdam::time
     petsc_check(VecScatterBegin(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
     petsc_check(VecScatterEnd(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
   }
+
+  double
+  CondensedFactorization::factor_entries() const
+  {
+    // INFOG(29) < 0 counts millions (MUMPS's convention for large factors).
+    const int n = mumps->id.infog[28];
+    return n < 0 ? -1e6 * n : double(n);
+  }
 } // namespace archdam::time

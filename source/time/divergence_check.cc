@@ -60,18 +60,12 @@ namespace archdam::time
     const auto box = GridTools::compute_bounding_box(space.dof_handler.get_triangulation());
     bound          = box.get_boundary_points().first.distance(box.get_boundary_points().second);
 
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto &fe = cell->get_fe();
-          dofs.resize(fe.n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            if (space.locally_owned.is_element(dofs[i]) &&
-                fe.system_to_component_index(i).first == fe::FESpace::pressure_comp)
-              is_pressure[space.locally_owned.index_within_set(dofs[i])] = true;
-        }
+    fe::visit_owned_cell_dofs(space, [&](const auto &cell, const unsigned int i, const auto dof) {
+      if (space.locally_owned.is_element(dof) &&
+          cell->get_fe().system_to_component_index(i).first == fe::FESpace::pressure_comp)
+        is_pressure[space.locally_owned.index_within_set(dof)] = true;
+      return false;
+    });
   }
 
   void
@@ -140,36 +134,33 @@ namespace archdam::time
   DivergenceCheck::describe(const types::global_dof_index dof, const std::string &what,
                             const double value) const
   {
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const auto &fe = cell->get_fe();
-          dofs.resize(fe.n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-            if (dofs[i] == dof)
-              {
-                const unsigned int c = fe.system_to_component_index(i).first;
-                const Point<dim>   x = StaticMappingQ1<dim>::mapping.transform_unit_to_real_cell(
-                  cell, fe.unit_support_point(i));
-                std::ostringstream m;
-                const bool p = c == fe::FESpace::pressure_comp;
-                const std::map<std::string, std::string> label{
-                  {"u", p ? "pressure p" : "displacement u_"},
-                  {"v", p ? "pressure rate dp/dt" : "velocity v_"},
-                  {"a", p ? "pressure acceleration d2p/dt2" : "acceleration a_"}};
-                const std::map<std::string, std::string> unit{{"u", p ? "Pa" : "m"},
-                                                              {"v", p ? "Pa/s" : "m/s"},
-                                                              {"a", p ? "Pa/s^2" : "m/s^2"}};
-                m << "the " << label.at(what);
-                if (!p)
-                  m << "xyz"[c];
-                m << " = " << value << " " << unit.at(what) << " at the node " << point_text(x) << " m in "
-                  << region_of(cell->material_id());
-                return m.str();
-              }
-        }
+    std::string text;
+    fe::visit_owned_cell_dofs(space, [&](const auto &cell, const unsigned int i, const auto d) {
+      if (d != dof)
+        return false;
+      const auto &fe = cell->get_fe();
+      const unsigned int c = fe.system_to_component_index(i).first;
+      const Point<dim>   x = StaticMappingQ1<dim>::mapping.transform_unit_to_real_cell(
+        cell, fe.unit_support_point(i));
+      std::ostringstream m;
+      const bool p = c == fe::FESpace::pressure_comp;
+      const std::map<std::string, std::string> label{
+        {"u", p ? "pressure p" : "displacement u_"},
+        {"v", p ? "pressure rate dp/dt" : "velocity v_"},
+        {"a", p ? "pressure acceleration d2p/dt2" : "acceleration a_"}};
+      const std::map<std::string, std::string> unit{{"u", p ? "Pa" : "m"},
+                                                    {"v", p ? "Pa/s" : "m/s"},
+                                                    {"a", p ? "Pa/s^2" : "m/s^2"}};
+      m << "the " << label.at(what);
+      if (!p)
+        m << "xyz"[c];
+      m << " = " << value << " " << unit.at(what) << " at the node " << point_text(x) << " m in "
+        << region_of(cell->material_id());
+      text = m.str();
+      return true;
+    });
+    if (!text.empty())
+      return text;
     return "the entry " + what + " of DOF " + std::to_string(dof) + " = " + std::to_string(value);
   }
 } // namespace archdam::time

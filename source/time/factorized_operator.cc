@@ -74,4 +74,21 @@ namespace archdam::time
                 ExcMessage("multi-column solve() needs the plain factorization"));
     petsc_check(KSPMatSolve(ksp, B, X));
   }
+
+  double
+  FactorizedOperator::factor_entries() const
+  {
+    if (condensed_factor)
+      return condensed_factor->factor_entries();
+    if (ksp == nullptr)
+      return 0.;
+    PC  pc;
+    Mat factor;
+    petsc_check(KSPGetPC(ksp, &pc));
+    petsc_check(PCFactorGetMatrix(pc, &factor));
+    PetscInt n = 0;
+    petsc_check(MatMumpsGetInfog(factor, 29, &n));
+    // INFOG(29) < 0 counts millions (MUMPS's convention for large factors).
+    return n < 0 ? -1e6 * n : double(n);
+  }
 } // namespace archdam::time

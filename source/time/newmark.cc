@@ -86,14 +86,26 @@ namespace archdam::time
     // is ~30x slower.
     AssertThrow(M.n_nonzero_elements() == K.n_nonzero_elements(),
                 ExcMessage("M and K must share their sparsity pattern."));
+    build_effective_operator(beta * p.beta1 * dt + p.beta2 * dt * dt,
+                             {{1. + alpha * p.beta1 * dt, &M}}, true, factor_interface);
+  }
+
+  void
+  NewmarkIntegrator::build_effective_operator(
+    const double                                              k_factor,
+    const std::vector<std::pair<double, const SparseMatrix *>> &terms,
+    const bool                                                positive_definite,
+    const std::vector<types::global_dof_index>               &factor_interface)
+  {
     effective_matrix.reinit(K);
     effective_matrix.copy_from(K);
-    effective_matrix *= beta * p.beta1 * dt + p.beta2 * dt * dt;
-    AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), 1. + alpha * p.beta1 * dt,
-                        static_cast<Mat>(M), SAME_NONZERO_PATTERN) == 0,
-                ExcMessage("PETSc MatAXPY failed."));
+    effective_matrix *= k_factor;
+    for (const auto &[c, A] : terms)
+      AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), c, static_cast<Mat>(*A),
+                          SAME_NONZERO_PATTERN) == 0,
+                  ExcMessage("PETSc MatAXPY failed."));
     add_dashpots_to_effective_matrix();
-    effective_operator.factorize(effective_matrix, true, factor_interface);
+    effective_operator.factorize(effective_matrix, positive_definite, factor_interface);
 
     const IndexSet owned = M.locally_owned_range_indices();
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
@@ -131,20 +143,8 @@ namespace archdam::time
     , dashpots(boundary_dashpots)
   {
     // Kbar = M + beta1 dt D + beta2 dt^2 K on the common pattern.
-    effective_matrix.reinit(K);
-    effective_matrix.copy_from(K);
-    effective_matrix *= p.beta2 * dt * dt;
-    for (const auto &[c, A] : {std::pair{1., &M}, {p.beta1 * dt, D}})
-      AssertThrow(MatAXPY(effective_matrix.petsc_matrix(), c, static_cast<Mat>(*A),
-                          SAME_NONZERO_PATTERN) == 0,
-                  ExcMessage("PETSc MatAXPY failed."));
-    add_dashpots_to_effective_matrix();
-    effective_operator.factorize(effective_matrix, positive_definite, factor_interface);
-
-    const IndexSet owned = M.locally_owned_range_indices();
-    for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
-                      &reduced_load})
-      v->reinit(owned, M.get_mpi_communicator());
+    build_effective_operator(p.beta2 * dt * dt, {{1., &M}, {p.beta1 * dt, D}},
+                             positive_definite, factor_interface);
   }
 
   void

@@ -14,18 +14,19 @@ namespace archdam::analysis
    * The loads on the dam of the static stage and what holds it, as resultant
    * forces [N] (doc/theory/loading-sequence.md §1): the first check an
    * engineer makes of a model. The dam is a free body loaded by its weight
-   * and the water on its wetted face and held by the rock through the faces
-   * they share; the joints are inside it and cancel. The rock's force is
-   * integrated from the recovered stress, int sigma n dA over the dam-rock
-   * faces (n out of the dam), not taken from the loads, so the sum
-   * weight + water + rock is the model's own out-of-balance: zero for an
-   * exact stress, small and falling with the mesh otherwise.
+   * and the water on its wetted face and held by its support, the rock
+   * through the faces they share (or the fixed truncation where the dam
+   * stands on it, no rock meshed); the joints are inside it and cancel. The
+   * support's force is integrated from the recovered stress, int sigma n dA
+   * over those faces (n out of the dam), not taken from the loads, so the
+   * sum weight + water + support is the model's own out-of-balance: zero for
+   * an exact stress, small and falling with the mesh otherwise.
    */
   struct StaticResultants
   {
-    dealii::Tensor<1, dim> weight, water, rock;
+    dealii::Tensor<1, dim> weight, water, support;
 
-    /// |weight + water + rock| / (|weight| + |water|).
+    /// |weight + water + support| / (|weight| + |water|).
     double
     out_of_balance() const;
 

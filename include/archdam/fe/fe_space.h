@@ -83,4 +83,18 @@ namespace archdam::fe
     std::function<void(dealii::DynamicSparsityPattern &)> add_couplings;
 
   };
+
+  /// The constraints of @p space without the lines of the DOFs i with
+  /// @p excluded[i] (the prescribed columns of an operator keep their own
+  /// values; the other rows keep the model's constraints).
+  dealii::AffineConstraints<double>
+  constraints_without(const FESpace &space, const std::vector<bool> &excluded);
+
+  /// Call @p visit(cell, i, dof) for each DOF i (global index dof) of each
+  /// locally owned cell of @p space, until it returns true.
+  void
+  visit_owned_cell_dofs(
+    const FESpace &space,
+    const std::function<bool(const dealii::DoFHandler<dim>::active_cell_iterator &, unsigned int,
+                             dealii::types::global_dof_index)> &visit);
 } // namespace archdam::fe

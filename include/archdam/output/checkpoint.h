@@ -21,11 +21,6 @@ namespace archdam::output
     /// InputError for a negative wall-time interval.
     void
     check() const;
-    bool
-    enabled() const
-    {
-      return interval > 0 || wall_interval > 0;
-    }
   };
 
   /// What a checkpoint is of: written by rank 0 as `manifest.txt`.

@@ -44,6 +44,10 @@ namespace archdam::time
       return gamma;
     }
 
+    /// Entries in the sparse factors (MUMPS's INFOG(29)).
+    double
+    factor_entries() const;
+
     /// v = S^{-1} v (S factorized densely, on every rank).
     void
     solve_interface(dealii::Vector<double> &v) const;

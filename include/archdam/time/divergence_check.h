@@ -30,13 +30,6 @@ namespace archdam::time
   public:
     explicit DivergenceCheck(const fe::FESpace &space);
 
-    /// L: the diagonal of the model's bounding box, m.
-    double
-    displacement_bound() const
-    {
-      return bound;
-    }
-
     /// Throw RunStopped naming the time, the step, the value and where (the
     /// node's position, component and region) if @p s after step @p step
     /// fails the check. Collective: every rank throws the same message.

@@ -49,11 +49,11 @@ namespace archdam::time
     void
     solve(Mat X, Mat B) const;
 
-    bool
-    is_factorized() const
-    {
-      return ksp != nullptr || condensed_factor != nullptr;
-    }
+    /// Entries in the factors (MUMPS's INFOG(29), summed over the processes;
+    /// the condensed factorization's sparse part): the memory and time a
+    /// solve costs grow with it.
+    double
+    factor_entries() const;
 
     /// The condensed factorization, if factorize() was given an interface.
     const CondensedFactorization *

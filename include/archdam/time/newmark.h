@@ -188,5 +188,12 @@ namespace archdam::time
     /// Add beta1 dt diag(dashpots) to Kbar (the viscous boundary).
     void
     add_dashpots_to_effective_matrix();
+    /// Kbar = @p k_factor K + sum c A over @p terms (on K's pattern), plus
+    /// the dashpots; factorize it, and size the work vectors.
+    void
+    build_effective_operator(double                                                     k_factor,
+                             const std::vector<std::pair<double, const SparseMatrix *>> &terms,
+                             bool positive_definite,
+                             const std::vector<dealii::types::global_dof_index> &factor_interface);
   };
 } // namespace archdam::time

@@ -377,15 +377,7 @@ namespace archdam::physics::reservoir
       is_column[i] = true;
     // The model's constraints without the lines of the columns themselves
     // (the rows keep the model's: p = 0 on the free surface).
-    AffineConstraints<double> others(space.locally_relevant);
-    for (const auto &line : space.constraints.get_lines())
-      if (!is_column[line.index])
-        {
-          others.add_line(line.index);
-          others.add_entries(line.index, line.entries);
-          others.set_inhomogeneity(line.index, line.inhomogeneity);
-        }
-    others.close();
+    const AffineConstraints<double> others = fe::constraints_without(space, is_column);
     const auto touches = [&](const InterfacePair &pair, std::vector<types::global_dof_index> &dofs) {
       dofs.resize(pair.solid_cell->get_fe().n_dofs_per_cell());
       pair.solid_cell->get_dof_indices(dofs);

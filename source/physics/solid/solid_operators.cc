@@ -124,15 +124,7 @@ namespace archdam::physics::solid
     };
 
     // The model's constraints without the lines of the columns themselves.
-    AffineConstraints<double> others(space.locally_relevant);
-    for (const auto &line : space.constraints.get_lines())
-      if (!is_column[line.index])
-        {
-          others.add_line(line.index);
-          others.add_entries(line.index, line.entries);
-          others.set_inhomogeneity(line.index, line.inhomogeneity);
-        }
-    others.close();
+    const AffineConstraints<double> others = fe::constraints_without(space, is_column);
 
     IndexSet rows = space.locally_relevant;
     for (const auto &line : others.get_lines())
