@@ -357,8 +357,9 @@ main(int argc, char **argv)
       const auto name = entry.path().filename().string();
       const auto ext  = entry.path().extension().string();
       // summary.json and HDF5 below; the VTU pieces hold binary numbers,
+      // the run lock names its process and start time (not a result);
       // compared serially only (under MPI the histories carry the state).
-      if (name == "summary.json" || ext == ".h5" ||
+      if (name == "summary.json" || name == ".archdam.lock" || ext == ".h5" ||
           (n_ranks > 1 && (ext == ".vtu" || ext == ".pvtu")))
         continue;
       ++n_files;

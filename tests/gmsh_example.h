@@ -36,7 +36,11 @@ namespace archdam::testing::gmsh_example
   /// Faces of one joint (the plane between two blocks): through the
   /// thickness x over the height.
   constexpr unsigned int joint_faces = nx_dam * (nz_wet + nz_dry);
-  /// Its vertices, less those on its edge against the rock (shared).
-  constexpr unsigned int joint_node_pairs =
-    (nx_dam + 1) * (nz_wet + nz_dry + 1) - (nx_dam + 1);
+  /// Its nodes for elements of degree @p p, (p nx + 1)(p nz + 1) on the
+  /// structured joint, less those on its edge against the rock (shared).
+  constexpr unsigned int
+  joint_node_pairs(const unsigned int p)
+  {
+    return (p * nx_dam + 1) * (p * (nz_wet + nz_dry) + 1) - (p * nx_dam + 1);
+  }
 } // namespace archdam::testing::gmsh_example

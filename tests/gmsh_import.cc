@@ -184,10 +184,10 @@ main(int argc, char **argv)
   log() << "Joints: " << counts.size() << ", faces per joint " << counts[0].faces << " and "
         << counts[1].faces << ", node pairs " << counts[0].node_pairs << " and "
         << counts[1].node_pairs << "; expected 2 joints of " << ex::joint_faces << " faces and "
-        << ex::joint_node_pairs << " node pairs: "
+        << ex::joint_node_pairs(1) << " node pairs: "
         << yes(counts[0].faces == ex::joint_faces && counts[1].faces == ex::joint_faces &&
-               counts[0].node_pairs == ex::joint_node_pairs &&
-               counts[1].node_pairs == ex::joint_node_pairs)
+               counts[0].node_pairs == ex::joint_node_pairs(1) &&
+               counts[1].node_pairs == ex::joint_node_pairs(1))
         << std::endl;
   log() << "Every joint face paired 1:1 (" << pairs.size() << " pairs of " << joint_faces
         << " faces): " << yes(2 * pairs.size() == joint_faces) << std::endl;

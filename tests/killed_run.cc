@@ -79,7 +79,9 @@ end
         const auto  name = entry.path().filename().string();
         const auto  ext  = entry.path().extension().string();
         std::string problem;
-        if (ext == ".tmp")
+        // Files being written (.tmp) are not results yet; the run lock
+        // (output/run_lock.h) is not one at all.
+        if (ext == ".tmp" || name == ".archdam.lock")
           continue;
         if (ext == ".csv")
           {

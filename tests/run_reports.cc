@@ -10,7 +10,9 @@
 // B. summary.json read with a JSON parser (Boost's): every column of
 //    histories.csv (displacement, acceleration in [m/s^2], principal stress)
 //    is a key of "peaks" with its value and time, under its full name, and
-//    each peak is the largest magnitude of its column in histories.csv.
+//    each peak is the largest magnitude of its column in histories.csv; the
+//    mesh report's node pairs of the joint (counted on the mesh) equal the
+//    node pairs the analysis built.
 // C. Warnings in summary.json: a dynamic stage longer than its record (a
 //    two-sample record, 0.02 s, a run of 0.05 s), and a generated motion cut
 //    while strong (Duration 13 s, Strong motion end 12 s, decay 0.3 1/s:
@@ -158,6 +160,12 @@ namespace
           << "\n  each a key of peaks with value and time: " << (found ? "yes" : "NO")
           << "\n  each peak the largest magnitude of its column: " << (equal ? "yes" : "NO")
           << "\n  no warnings: " << (child(s, "warnings") ? "NO" : "yes") << std::endl;
+    // One name, one number: the mesh report's node pairs (counted from the
+    // mesh at the element degree) are the pairs the analysis built.
+    archdam::testing::check_relative("  the mesh report's node pairs of joint 0 against the "
+                                     "analysis's",
+                                     number(s, {"mesh", "joints", "joint 0", "node pairs"}),
+                                     number(s, {"joints", "node pairs"}), 1e-15);
   }
 
   /// Whether warning @p k of the run in @p directory contains @p text.

@@ -54,7 +54,7 @@ namespace archdam
         std::ifstream in(name);
         if (!in)
           throw InputError(where.empty() ? "Cannot open the parameter file '" + name + "'." :
-                                           where + "cannot open '" + name + "'.");
+                                           where + "'" + name + "' cannot be opened.");
 
         const fs::path canonical = fs::weakly_canonical(path, ec);
         for (const auto &open : chain)
@@ -84,8 +84,8 @@ namespace archdam
                 const fs::path target = fs::path(included).is_absolute() ?
                                           fs::path(included) :
                                           path.parent_path() / included;
-                read(target.string(),
-                     "Line " + std::to_string(number) + " of file " + name + ": include ");
+                read(target.string(), "Line " + std::to_string(number) + " of file " + name +
+                                        ": the included file ");
                 continue;
               }
             if (s.rfind("subsection ", 0) == 0)

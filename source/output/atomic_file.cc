@@ -3,11 +3,15 @@
 
 #include <hdf5.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
+#include <vector>
 
 namespace archdam::output
 {
@@ -42,19 +46,83 @@ namespace archdam::output
     commit_temporary(filename);
   }
 
+  namespace
+  {
+    /// Close what a failed HDF5 write left open (deal.II's parallel HDF5
+    /// writer holds its file and datasets in plain handles): left open, the
+    /// HDF5 library would flush them at exit, after MPI has ended, and crash.
+    void
+    close_hdf5_objects()
+    {
+      const ssize_t n = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL);
+      if (n <= 0)
+        return;
+      std::vector<hid_t> ids(n);
+      H5Fget_obj_ids(H5F_OBJ_ALL, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE |
+                                    H5F_OBJ_ATTR,
+                     n, ids.data());
+      for (const hid_t id : ids)
+        if (id > 0 && H5Oclose(id) < 0)
+          H5Aclose(id);
+      ids.assign(n, 0);
+      H5Fget_obj_ids(H5F_OBJ_ALL, H5F_OBJ_FILE, n, ids.data());
+      for (const hid_t id : ids)
+        if (id > 0)
+          H5Fclose(id);
+    }
+
+    /// Standard error sent to /dev/null while it lives: the HDF5 and MPI-IO
+    /// layers print their own diagnostics of a failed write there, which the
+    /// one message of write_hdf5_file() replaces.
+    class QuietStandardError
+    {
+    public:
+      QuietStandardError()
+        : saved(::dup(STDERR_FILENO))
+      {
+        std::fflush(stderr);
+        const int null = ::open("/dev/null", O_WRONLY);
+        if (null >= 0)
+          {
+            ::dup2(null, STDERR_FILENO);
+            ::close(null);
+          }
+      }
+      ~QuietStandardError()
+      {
+        std::fflush(stderr);
+        if (saved >= 0)
+          {
+            ::dup2(saved, STDERR_FILENO);
+            ::close(saved);
+          }
+      }
+
+    private:
+      const int saved;
+    };
+  } // namespace
+
   void
   write_hdf5_file(const std::string &filename, const std::function<void()> &write)
   {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    errno = 0;
-    try
-      {
-        write();
-      }
-    catch (const std::exception &)
-      {
-        throw InputError(cannot_write(filename, errno));
-      }
+    int error = 0;
+    {
+      const QuietStandardError quiet;
+      errno = 0;
+      try
+        {
+          write();
+          return;
+        }
+      catch (const std::exception &)
+        {
+          error = errno;
+          close_hdf5_objects();
+        }
+    }
+    throw InputError(cannot_write(filename, error));
   }
 
   void
