@@ -55,7 +55,7 @@ main(int argc, char **argv)
                                           physics::solid::InertiaOf::dam,
                                           Point<dim>::unit_vector(d), iota[d]);
   joints::JointParameters jp;
-  jp.model                    = "frictional contact";
+  jp.model                    = joints::Model::frictional_contact;
   jp.law.friction_coefficient = mu;
   jp.law.cohesion = jp.law.residual_cohesion = 0.;
 

@@ -50,10 +50,10 @@ namespace
   };
 
   Result
-  run(const std::string &boundary)
+  run(const foundation::TransmittingBoundary boundary)
   {
     foundation::FoundationParameters fp;
-    fp.model                 = "massed";
+    fp.model                 = foundation::Model::massed;
     fp.transmitting_boundary = boundary;
     solid::MaterialParameters materials;
     materials.rock = testing::test_rock();
@@ -127,7 +127,7 @@ main(int argc, char **argv)
 
   auto &log = testing::log();
   log << "SV column, seismic input through the viscous boundary:" << std::endl;
-  const Result viscous = run("viscous");
+  const Result viscous = run(foundation::TransmittingBoundary::viscous);
   testing::check_relative("  input work [J] (plane waves)", viscous.end.input, incident, 0.05);
   testing::check_relative("  radiated energy [J] (plane waves)", viscous.end.radiated, incident,
                           0.05);
@@ -138,7 +138,7 @@ main(int argc, char **argv)
       << (without.balance_error() > 0.5 ? "yes" : "NO") << std::endl;
 
   log << "SV column, seismic input through the MTF:" << std::endl;
-  const Result mtf = run("MTF");
+  const Result mtf = run(foundation::TransmittingBoundary::mtf);
   testing::check_below("  balance error", mtf.end.balance_error(), 1e-10);
   testing::check_relative("  energy in the column at t = 0.15 s [J] (incident energy)",
                           mtf.inside, incident / 2, 0.05);

@@ -30,6 +30,8 @@ using namespace archdam::physics;
 
 namespace
 {
+  using foundation::TransmittingBoundary;
+
   const double H = 200., w = 5., dt = 1e-3;
   const testing::Sin4Pulse g{0.01, 0.06};
 
@@ -39,10 +41,10 @@ namespace
   };
 
   Result
-  run(const unsigned int component, const std::string &boundary, const bool seismic)
+  run(const unsigned int component, const TransmittingBoundary boundary, const bool seismic)
   {
     foundation::FoundationParameters fp;
-    fp.model                 = "massed";
+    fp.model                 = foundation::Model::massed;
     fp.transmitting_boundary = boundary;
     solid::MaterialParameters materials;
     materials.rock = testing::test_rock();
@@ -134,22 +136,27 @@ main(int argc, char **argv)
   for (const unsigned int component : {0u, 2u})
     {
       const std::string name = component == 0 ? "shear (SV) column" : "P-wave column";
-      for (const std::string boundary : {"MTF", "viscous", "fixed"})
+      for (const auto boundary : {TransmittingBoundary::mtf, TransmittingBoundary::viscous,
+                                  TransmittingBoundary::fixed})
         {
           const Result a = run(component, boundary, false);
-          testing::log() << name << ", " << boundary << " boundary, outgoing pulse: reflected "
+          testing::log() << name << ", "
+                         << selection_name(boundary, foundation::transmitting_boundary_names())
+                         << " boundary, outgoing pulse: reflected "
                          << "energy fraction " << std::setprecision(1) << std::fixed
                          << 100 * a.reflected << " %" << std::defaultfloat << std::setprecision(6) << std::endl;
-          if (boundary == "fixed")
+          if (boundary == TransmittingBoundary::fixed)
             testing::log() << "  fixed boundary reflects more than 50 %: "
                            << (a.reflected > 0.5 ? "yes" : "NO") << std::endl;
           else
             testing::check_below("  reflected energy fraction", a.reflected, 0.02);
         }
-      for (const std::string boundary : {"MTF", "viscous"})
+      for (const auto boundary : {TransmittingBoundary::mtf, TransmittingBoundary::viscous})
         {
           const Result b = run(component, boundary, true);
-          testing::log() << name << ", " << boundary << " boundary, seismic input:" << std::endl;
+          testing::log() << name << ", "
+                         << selection_name(boundary, foundation::transmitting_boundary_names())
+                         << " boundary, seismic input:" << std::endl;
           testing::check_below("  max |u_surface - g(t - H/c)| / max g", b.surface_error, 0.05);
           testing::check_below("  energy left after the pulse / incident energy", b.reflected,
                                0.02);

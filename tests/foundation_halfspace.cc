@@ -32,14 +32,16 @@ using namespace archdam::physics;
 
 namespace
 {
+  using foundation::TransmittingBoundary;
+
   const double dt = 2e-3, T = 0.06, window = 0.125;
 
   /// u_x and u_z at the receiver at every step of the window.
   std::vector<std::array<double, 2>>
-  receiver_history(const double size, const std::string &boundary)
+  receiver_history(const double size, const TransmittingBoundary boundary)
   {
     foundation::FoundationParameters fp;
-    fp.model                 = "massed";
+    fp.model                 = foundation::Model::massed;
     fp.transmitting_boundary = boundary;
     solid::MaterialParameters materials;
     materials.rock = testing::test_rock();
@@ -105,16 +107,20 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto reference = receiver_history(120, "fixed");
+  const auto reference = receiver_history(120, TransmittingBoundary::fixed);
   std::array<double, 2> peak{};
   for (const auto &r : reference)
     for (unsigned int c = 0; c < 2; ++c)
       peak[c] = std::max(peak[c], std::abs(r[c]));
 
-  for (const std::string boundary : {"MTF", "viscous", "fixed"})
+  for (const auto boundary :
+       {TransmittingBoundary::mtf, TransmittingBoundary::viscous, TransmittingBoundary::fixed})
     {
+      const bool fixed = boundary == TransmittingBoundary::fixed;
       const auto small = receiver_history(60, boundary);
-      testing::log() << "60 m box, " << boundary << " boundary, against the 120 m box:" << std::endl;
+      testing::log() << "60 m box, "
+                     << selection_name(boundary, foundation::transmitting_boundary_names())
+                     << " boundary, against the 120 m box:" << std::endl;
       for (unsigned int c = 0; c < 2; ++c)
         {
           double error = 0.;
@@ -122,11 +128,12 @@ main(int argc, char **argv)
             error = std::max(error, std::abs(small[k][c] - reference[k][c]) / peak[c]);
           const std::string what = std::string("  receiver u_") + "xz"[c] +
                                    ": max difference / peak" +
-                                   (boundary == "fixed" ? " above 0.2: " : "");
-          if (boundary == "fixed")
+                                   (fixed ? " above 0.2: " : "");
+          if (fixed)
             testing::log() << what << (error > 0.2 ? "yes" : "NO") << std::endl;
           else
-            testing::check_below(what, error, boundary == "MTF" ? 0.10 : 0.15);
+            testing::check_below(what, error,
+                                 boundary == TransmittingBoundary::mtf ? 0.10 : 0.15);
           testing::log() << "    (" << std::setprecision(0) << std::fixed << 100 * error
                          << " %)" << std::defaultfloat << std::setprecision(6) << std::endl;
         }

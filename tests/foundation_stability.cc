@@ -34,7 +34,7 @@ namespace
   run(const bool pulse)
   {
     foundation::FoundationParameters fp;
-    fp.model = "massed";
+    fp.model = foundation::Model::massed;
     solid::MaterialParameters materials;
     materials.rock = testing::test_rock();
 

@@ -113,7 +113,7 @@ namespace
       : space(tria, fe_parameters())
     {
       materials.rock = testing::test_rock();
-      water.model    = "compressible";
+      water.model    = reservoir::Model::compressible;
       space.pressure_in_water = true;
       space.setup(prescribed ? std::set<types::boundary_id>{ids::foundation_bottom,
                                                            ids::foundation_sides} :
@@ -423,8 +423,8 @@ namespace
     testing::rock_box(tria, Point<3>(0, 0, -30), Point<3>(40, 30, 0), {4, 3, 3},
                       ids::foundation_sides);
     physics::foundation::FoundationParameters fp;
-    fp.model                 = "massed";
-    fp.transmitting_boundary = "viscous";
+    fp.model                 = physics::foundation::Model::massed;
+    fp.transmitting_boundary = physics::foundation::TransmittingBoundary::viscous;
     fe::FiniteElementParameters fep;
     fep.degree = 1;
     fe::FESpace space(tria, fep);

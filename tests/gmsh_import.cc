@@ -114,7 +114,7 @@ main(int argc, char **argv)
   }
 
   geometry::MeshParameters p;
-  p.source    = "gmsh";
+  p.source    = geometry::MeshSource::gmsh;
   p.gmsh_file = "gmsh_blocks_v2.msh";
   parallel::shared::Triangulation<3> tria(MPI_COMM_WORLD);
   geometry::create_mesh(p, tria, true, ex::directory);

@@ -41,17 +41,20 @@ namespace
            line4 + "\n";
   }
 
-  /// GroundMotion with one x component.
+  /// GroundMotion with one x component, its format and units given by
+  /// name as archdam-motion's --format and --units are (record_format(),
+  /// record_units(): a case file's names are checked by their patterns).
   void
   ground_motion_x(const std::string &file,
                   const std::string &format,
                   const std::string &units,
                   const std::string &base_directory = "")
   {
+    const std::string context = record_file_context(0, file);
     GroundMotionParameters p;
     p.components[0].file   = file;
-    p.components[0].format = format;
-    p.components[0].units  = units;
+    p.components[0].format = record_format(format, context);
+    p.components[0].units  = record_units(units, context);
     const GroundMotion motion(p, base_directory);
   }
 } // namespace
@@ -194,7 +197,7 @@ main(int argc, char **argv)
   std::cout << "\nGenerated motions" << std::endl;
   const auto generated = [](const std::function<void(ArtificialMotionParameters &)> &change) {
     GroundMotionParameters p;
-    p.components[0].source = "generated";
+    p.components[0].source = MotionSource::generated;
     change(p.generated);
     const GroundMotion motion(p, "");
   };
@@ -203,13 +206,14 @@ main(int argc, char **argv)
   expect_input_error("rise ends after the strong part", [&] {
     generated([](auto &g) { g.envelope.rise_end = 5, g.envelope.strong_end = 4; });
   });
+  const auto table = TargetSpectrumKind::table;
   expect_input_error("Target spectrum = table without a table",
-                     [&] { generated([](auto &g) { g.spectrum = "table"; }); });
+                     [&] { generated([&](auto &g) { g.spectrum = table; }); });
   expect_input_error("malformed spectrum table", [&] {
-    generated([](auto &g) { g.spectrum = "table", g.table = "0: 1; 0.2; 1: 2"; });
+    generated([&](auto &g) { g.spectrum = table, g.table = "0: 1; 0.2; 1: 2"; });
   });
   expect_input_error("spectrum table periods decreasing", [&] {
-    generated([](auto &g) { g.spectrum = "table", g.table = "0: 1; 0.5: 2.5; 0.2: 2.5"; });
+    generated([&](auto &g) { g.spectrum = table, g.table = "0: 1; 0.5: 2.5; 0.2: 2.5"; });
   });
   expect_input_error("Characteristic period 0", [&] {
     generated([](auto &g) { g.characteristic_period = 0; });
@@ -223,7 +227,7 @@ main(int argc, char **argv)
   expect_input_error("damping ratio 1", [&] { generated([](auto &g) { g.damping = 1; }); });
   expect_input_error("vertical factor that is not a number", [] {
     GroundMotionParameters p;
-    p.components[2].source     = "generated";
+    p.components[2].source      = MotionSource::generated;
     p.generated.vertical_factor = "two thirds";
     const GroundMotion motion(p, "");
   });

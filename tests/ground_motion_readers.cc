@@ -291,11 +291,12 @@ namespace
                                 "end\n");
     const auto &[x, y, z] = parameters.components;
     report("parsed x: File, Format auto, Units g, Scale factor 0.5",
-           x.file == "ground_motions/Rinaldi228.AT2" && x.format == "auto" &&
-             x.units == "g" && x.scale == 0.5);
+           x.file == "ground_motions/Rinaldi228.AT2" &&
+             x.format == RecordFormat::automatic && x.units == RecordUnits::g &&
+             x.scale == 0.5);
     report("parsed y: no file", y.file.empty() && y.scale == 1.);
     report("parsed z: absolute File, Units cm/s^2, Scale factor -1",
-           z.file == sine_path && z.units == "cm/s^2" && z.scale == -1.);
+           z.file == sine_path && z.units == RecordUnits::cm_per_s2 && z.scale == -1.);
 
     // x is relative: it must be found under base_directory.
     const GroundMotion motion(parameters, data_directory);
@@ -333,7 +334,7 @@ namespace
     // directory; .txt means two-column in Format auto. Units m/s^2 and g.
     GroundMotionParameters here;
     here.components[1].file  = "gm_sine.txt";
-    here.components[1].units = "m/s^2";
+    here.components[1].units = RecordUnits::m_per_s2;
     here.components[2].file  = "gm_sine.txt";
     here.components[2].scale = 2.;
     const GroundMotion from_cwd(here, "");

@@ -55,7 +55,7 @@ namespace
     np.beta2     = 0.3025;
     time::NewmarkIntegrator newmark(np, m.M, m.K, {0., 0.}, m.space->constraints);
     joints::JointParameters jp;
-    jp.model                     = "frictional contact";
+    jp.model                     = joints::Model::frictional_contact;
     jp.law.friction_coefficient  = 0.;
     auto solver = joints::make_joint_solver(jp, *m.pairs, newmark.displacement_factor(),
                                             newmark.effective(), newmark.effective_factor());

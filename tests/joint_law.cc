@@ -120,7 +120,7 @@ main(int argc, char **argv)
 
   {
     joints::JointParameters jp;
-    jp.model                    = "frictional contact";
+    jp.model                    = joints::Model::frictional_contact;
     jp.law.friction_coefficient = 0.5;
     jp.law.tensile_strength     = sigma_t;
     jp.law.cohesion             = sigma_t; // shear capacity c - mu f_xi > 0 up to sigma_t
@@ -174,7 +174,7 @@ main(int argc, char **argv)
 
   {
     joints::JointParameters jp;
-    jp.model                    = "frictional contact";
+    jp.model                    = joints::Model::frictional_contact;
     jp.law.friction_coefficient = 0.5;
     jp.law.initial_gap          = 1e-3;
     Run          r(jp, dt);
@@ -198,7 +198,7 @@ main(int argc, char **argv)
 
   {
     joints::JointParameters jp;
-    jp.model                    = "frictional contact";
+    jp.model                    = joints::Model::frictional_contact;
     jp.law.friction_coefficient = 0.5;
     Run          r(jp, dt);
     const double g = 9.81, W = 2400. * g, theta = M_PI / 6, T = 0.1;

@@ -72,7 +72,7 @@ namespace
   /// The FE slip history: x component of w = u2 - u1, mean over the pairs,
   /// every time step, with the chosen contact solver.
   std::vector<double>
-  fe_block(const std::string &solver_name, const std::function<double(double)> &ag,
+  fe_block(const joints::Solver contact_solver, const std::function<double(double)> &ag,
            const double mu, const double c, const double end, const double dt,
            const bool condensed = false)
   {
@@ -86,8 +86,8 @@ namespace
     physics::solid::assemble_inertia_load(*m.space, m.materials, physics::solid::InertiaOf::dam,
                                           Point<dim>::unit_vector(0), iota_x);
     joints::JointParameters jp;
-    jp.model                    = "frictional contact";
-    jp.solver                   = solver_name;
+    jp.model                    = joints::Model::frictional_contact;
+    jp.solver                   = contact_solver;
     jp.law.friction_coefficient = mu;
     jp.law.cohesion = jp.law.residual_cohesion = c;
 
@@ -163,7 +163,7 @@ main(int argc, char **argv)
       const double N     = mu + c * area / (m * g);
       const double V     = A * g * t0;
       const double ref   = V * V / (2 * g * N) * (1 - N / A);
-      const auto   slip  = fe_block("mixed", pulse, mu, c, 0.4, dt);
+      const auto   slip  = fe_block(joints::Solver::mixed, pulse, mu, c, 0.4, dt);
       log << "rectangular pulse A = " << A << ", t0 = " << t0 << " s, N = " << N << ":"
           << std::endl;
       testing::check_relative("  permanent slip [m] (Newmark 1965)", -slip.back(), ref, 0.02);
@@ -181,7 +181,7 @@ main(int argc, char **argv)
   for (const double step : {dt, dt / 2})
     {
       const auto ref = rigid_block(harmonic, mu, 1.0, step);
-      const auto mixed = fe_block("mixed", harmonic, mu, 0., 1.0, step);
+      const auto mixed = fe_block(joints::Solver::mixed, harmonic, mu, 0., 1.0, step);
       double err     = 0.;
       for (unsigned int k = 0; k < ref.size(); ++k)
         err = std::max(err, std::abs(mixed[k] - ref[k]));
@@ -199,8 +199,8 @@ main(int argc, char **argv)
   // monolithic one with penalty springs of 1e8 times the largest diagonal
   // entry of Kbar, so they agree to ~1e-8 of the displacements; 1e-6 of the
   // peak slip leaves room for the contact tolerances.
-  const auto monolithic  = fe_block("monolithic", pulse, mu, 0., 0.4, dt);
-  const auto mixed_pulse = fe_block("mixed", pulse, mu, 0., 0.4, dt);
+  const auto monolithic  = fe_block(joints::Solver::monolithic, pulse, mu, 0., 0.4, dt);
+  const auto mixed_pulse = fe_block(joints::Solver::mixed, pulse, mu, 0., 0.4, dt);
   double     diff        = 0.;
   for (unsigned int k = 0; k < monolithic.size(); ++k)
     diff = std::max(diff, std::abs(mixed_pulse[k] - monolithic[k]));
@@ -210,7 +210,7 @@ main(int argc, char **argv)
   // The mixed method condensed on the pairs (one back-substitution per step)
   // against the predictor and corrector: the same contact problem, so the
   // same slip to the contact tolerances.
-  const auto condensed = fe_block("mixed", pulse, mu, 0., 0.4, dt, true);
+  const auto condensed = fe_block(joints::Solver::mixed, pulse, mu, 0., 0.4, dt, true);
   diff                 = 0.;
   for (unsigned int k = 0; k < condensed.size(); ++k)
     diff = std::max(diff, std::abs(condensed[k] - mixed_pulse[k]));

@@ -50,7 +50,7 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
 
   geometry::MeshParameters p;
-  p.source    = "gmsh";
+  p.source    = geometry::MeshSource::gmsh;
   p.gmsh_file = "gmsh_blocks_v4.msh";
   Triangulation<3> model;
   geometry::build_model_mesh(p, ex::directory, model);

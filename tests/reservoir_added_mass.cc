@@ -86,7 +86,7 @@ main(int argc, char **argv)
   {
     DryModel m(ch, 4);
     reservoir::ReservoirParameters rp;
-    rp.model = "westergaard";
+    rp.model = reservoir::Model::westergaard;
     for (const bool from_mesh : {true, false})
       {
         rp.level_from_mesh = from_mesh;
@@ -154,7 +154,7 @@ main(int argc, char **argv)
         << ", Westergaard 7/12 = " << 7. / 12 << std::endl;
 
   reservoir::ReservoirParameters rp;
-  rp.model   = "incompressible";
+  rp.model   = reservoir::Model::incompressible;
   rp.density = rho;
   std::vector<double> errors;
   for (const unsigned int n : {4u, 8u, 16u})

@@ -42,7 +42,7 @@ main(int argc, char **argv)
     dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     make_channel(ch, 3, 2, 0, tria);
     reservoir::ReservoirParameters rp;
-    rp.model           = "compressible";
+    rp.model           = reservoir::Model::compressible;
     rp.level_from_mesh = false;
     rp.water_level     = 40.;
     reservoir::water_level(rp, tria);

@@ -51,7 +51,7 @@ namespace
 
   /// The resonance frequency [rad/s] of the wall with the given water model.
   double
-  resonance(const Channel &ch, const std::string &model)
+  resonance(const Channel &ch, const reservoir::Model model)
   {
     dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     make_channel(ch, 24, 8, 0, tria);
@@ -78,7 +78,7 @@ namespace
     Vector inertia;
     physics::solid::assemble_inertia_load(space, materials, physics::solid::InertiaOf::dam,
                                           dealii::Point<dim>::unit_vector(0), inertia);
-    if (model == "westergaard")
+    if (model == reservoir::Model::westergaard)
       reservoir::add_westergaard_mass(space, ch.rho, ch.H, M);
     std::unique_ptr<reservoir::FluidOperators> ops;
     if (rp.has_pressure())
@@ -154,10 +154,10 @@ main(int argc, char **argv)
   Channel ch;
   bool    ok = true;
 
-  const double empty          = resonance(ch, "none");
-  const double compressible   = resonance(ch, "compressible");
-  const double incompressible = resonance(ch, "incompressible");
-  const double westergaard    = resonance(ch, "westergaard");
+  const double empty          = resonance(ch, reservoir::Model::none);
+  const double compressible   = resonance(ch, reservoir::Model::compressible);
+  const double incompressible = resonance(ch, reservoir::Model::incompressible);
+  const double westergaard    = resonance(ch, reservoir::Model::westergaard);
   log() << "Fundamental frequency [Hz] of the 50 m wall:" << std::endl
         << std::setprecision(4) << "  empty " << empty / (2 * M_PI) << ", compressible "
         << compressible / (2 * M_PI) << ", incompressible " << incompressible / (2 * M_PI)

@@ -158,8 +158,9 @@ namespace
   {
     log() << "Coupling S: p^T S u for u_x = z^2, p = 1 (reference rho_w W H^3/3)" << std::endl;
     reservoir::ReservoirParameters rp;
-    rp.model        = "compressible";
-    rp.free_surface = "gravity waves"; // no constraint on p: p = 1 everywhere
+    rp.model        = reservoir::Model::compressible;
+    // gravity waves: no constraint on p, so that p = 1 everywhere
+    rp.free_surface = reservoir::FreeSurface::gravity_waves;
     for (const unsigned int refinement : {0u, 1u})
       {
         const Model m(ch, rp, 6, 2, refinement, false);
@@ -201,7 +202,7 @@ main(int argc, char **argv)
   check_coupling(ch);
 
   reservoir::ReservoirParameters rp;
-  rp.model       = "compressible";
+  rp.model       = reservoir::Model::compressible;
   rp.density     = ch.rho;
   rp.sound_speed = ch.c;
 

@@ -59,7 +59,7 @@ namespace
     dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     make_channel(ch, static_cast<unsigned int>(std::lround(ch.L / ch.H * nz)), nz, 0, tria);
     reservoir::ReservoirParameters rp;
-    rp.model       = "compressible";
+    rp.model       = reservoir::Model::compressible;
     rp.density     = ch.rho;
     rp.sound_speed = ch.c;
     rp.reflection  = 0.5;

@@ -15,7 +15,7 @@ namespace archdam::analysis
     check_convergence(const joints::JointParameters &p, const joints::JointSolver &solver,
                       const joints::ContactStep &step, const std::string &when)
     {
-      if (!step.converged && p.on_non_convergence == "stop")
+      if (!step.converged && p.on_non_convergence == joints::OnNonConvergence::stop)
         throw InputError("Contraction joints: " + when + ", " + solver.describe(step) +
                          ". Set 'On non-convergence = continue' to go on and flag such "
                          "steps, or adjust Maximum iterations or the tolerances.");
@@ -25,8 +25,8 @@ namespace archdam::analysis
   std::vector<types::global_dof_index>
   Simulation::condensed_interface() const
   {
-    if (node_pairs && p.joints.solver == "mixed" &&
-        p.joints.mixed_solves == "condensed on the pairs")
+    if (node_pairs && p.joints.solver == joints::Solver::mixed &&
+        p.joints.mixed_solves == joints::MixedSolves::condensed_on_the_pairs)
       return node_pairs->interface();
     return {};
   }
@@ -92,7 +92,7 @@ namespace archdam::analysis
   Simulation::summarize_joints()
   {
     summary.set("joints/node pairs", node_pairs->size());
-    summary.set("joints/solver", p.joints.solver);
+    summary.set("joints/solver", selection_name(p.joints.solver, joints::solver_names()));
     if (joint_output)
       {
         const double steps = joint_output->rows().size() - 1;

@@ -76,7 +76,8 @@ namespace archdam::analysis
   void
   Simulation::build_mesh(Triangulation<dim> &model)
   {
-    screen << "Building the mesh (Mesh/Source = " << p.mesh.source << ")" << std::endl;
+    screen << "Building the mesh (Mesh/Source = "
+           << selection_name(p.mesh.source, geometry::mesh_source_names()) << ")" << std::endl;
     geometry::build_model_mesh(p.mesh, p.base_directory, model);
     const auto report = output::make_mesh_report(model, p.finite_element.degree);
     if (screen.is_active())
@@ -111,7 +112,7 @@ namespace archdam::analysis
     // they carry the pressure only in the compressible and incompressible
     // models.
     namespace reservoir = physics::reservoir;
-    const auto         water = p.reservoir.kind();
+    const auto         water = p.reservoir.model;
     Triangulation<dim> model;
     build_mesh(model);
     if (water == reservoir::Model::none)
@@ -334,18 +335,21 @@ namespace archdam::analysis
       p.foundation, *fe_space, p.materials, inertia, *free_field,
       p.time_integration.time_step);
     massed_foundation->add_springs(stiffness_matrix);
-    if (p.foundation.transmitting_boundary == "viscous" && p.foundation.spring_distance == 0. &&
+    using physics::foundation::TransmittingBoundary;
+    const TransmittingBoundary boundary = p.foundation.transmitting_boundary;
+    if (boundary == TransmittingBoundary::viscous && p.foundation.spring_distance == 0. &&
         p.analysis.runs("static"))
       throw InputError("Foundation: the viscous boundary without springs (Spring distance = 0) "
                        "does not support the model in the static stage; set Spring distance "
                        "> 0, or use the MTF or the fixed boundary.");
-    screen << "Massed foundation: " << p.foundation.transmitting_boundary
+    screen << "Massed foundation: "
+           << selection_name(boundary, physics::foundation::transmitting_boundary_names())
            << " boundary; free surface at z = " << z_top << " m, bottom at z = " << z_bottom
            << " m; the ground motion reaches the surface after " << std::setprecision(4)
            << free_field->delay(0) << " s (horizontal), " << free_field->delay(dim - 1)
            << " s (vertical)";
     if (const auto *mtf = massed_foundation->transmitting_boundary();
-        mtf && p.foundation.transmitting_boundary == "MTF")
+        mtf && boundary == TransmittingBoundary::mtf)
       screen << "; MTF order " << p.foundation.mtf_order << ", largest c_a dt / h = "
              << mtf->largest_courant_number();
     screen << std::endl;

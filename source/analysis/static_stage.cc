@@ -68,7 +68,8 @@ namespace archdam::analysis
     namespace reservoir = physics::reservoir;
     Tensor<1, dim> gravity;
     gravity[dim - 1] = p.static_loads.gravity ? -p.static_loads.g : 0.;
-    const bool   hydrostatic = p.static_loads.hydrostatic && p.reservoir.kind() != reservoir::Model::none;
+    const bool   hydrostatic =
+      p.static_loads.hydrostatic && p.reservoir.model != reservoir::Model::none;
     const double level = hydrostatic ? reservoir::water_level(p.reservoir, triangulation) : 0.;
     const double rho_g = p.reservoir.density * p.static_loads.g;
     Vector       u;

@@ -17,13 +17,12 @@ namespace archdam::geometry
   void
   MeshParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Source", source,
-                      "Where the mesh comes from: box = a concrete block on a "
-                      "rock block (tests and examples); arch dam = the parametric "
-                      "double-curvature arch dam in its canyon with rock and "
-                      "reservoir (doc/arch-dam-geometry.md); gmsh = a hexahedral "
-                      "mesh read from Mesh/Gmsh/File (doc/user-guide.md).",
-                      Patterns::Selection("box|arch dam|gmsh"));
+    add_selection(prm, "Source", source, mesh_source_names(),
+                  "Where the mesh comes from: box = a concrete block on a "
+                  "rock block (tests and examples); arch dam = the parametric "
+                  "double-curvature arch dam in its canyon with rock and "
+                  "reservoir (doc/arch-dam-geometry.md); gmsh = a hexahedral "
+                  "mesh read from Mesh/Gmsh/File (doc/user-guide.md).");
     box.add_parameters(prm);
     prm.enter_subsection("Arch dam");
     arch_dam.add_parameters(prm);
@@ -88,16 +87,21 @@ namespace archdam::geometry
                    Triangulation<dim> &model)
   {
     Triangulation<dim> conforming;
-    if (p.source == "arch dam")
-      generate_arch_dam(p.arch_dam, conforming);
-    else if (p.source == "gmsh")
+    switch (p.source)
       {
-        if (p.gmsh_file.empty())
-          throw InputError("Mesh/Gmsh/File: no file given for Mesh/Source = gmsh.");
-        read_gmsh(find_input_file(p.gmsh_file, base_directory, "Mesh/Gmsh/File"), conforming);
+        case MeshSource::box:
+          generate_box(p.box, conforming);
+          break;
+        case MeshSource::arch_dam:
+          generate_arch_dam(p.arch_dam, conforming);
+          break;
+        case MeshSource::gmsh:
+          if (p.gmsh_file.empty())
+            throw InputError("Mesh/Gmsh/File: no file given for Mesh/Source = gmsh.");
+          read_gmsh(find_input_file(p.gmsh_file, base_directory, "Mesh/Gmsh/File"),
+                    conforming);
+          break;
       }
-    else
-      generate_box(p.box, conforming);
 
     check_cell_shapes(conforming);
     check_model_ids(conforming);

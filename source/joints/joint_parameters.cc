@@ -13,36 +13,32 @@ namespace archdam::joints
   void
   JointParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Model", model,
-                      "How the contraction joints between dam blocks behave: glued = "
-                      "the two faces of every joint are tied together (the monolithic "
-                      "dam); frictional contact = the joints open, close and slide "
-                      "(Mohr-Coulomb with tension cut-off, doc/theory/joints.md §2).",
-                      Patterns::Selection("glued|frictional contact"));
-    prm.add_parameter("Solver", solver,
-                      "Frictional contact solver: mixed = the mixed method (the "
-                      "effective matrix factorized once, the contact problem on the "
-                      "node pairs only); monolithic = the reference solver on the "
-                      "full system (penalty, refactorized as the contact states "
-                      "change), for verification and benchmarks.",
-                      Patterns::Selection("mixed|monolithic"));
-    prm.add_parameter("Flexibility coupling", coupling,
-                      "Which entries of the flexibility matrix C the mixed method "
-                      "keeps: all joints = the exact C; neighbouring joints = only "
-                      "the coupling between pairs of the same or adjacent joints "
-                      "(the paper's sparse approximation).",
-                      Patterns::Selection("all joints|neighbouring joints"));
-    prm.add_parameter("Mixed method solves", mixed_solves,
-                      "How a solve of the mixed method reaches the pairs (doc/theory/joints.md "
-                      "§4): condensed on the pairs = the stage's matrix factorized by "
-                      "MUMPS with the pairs' unknowns eliminated last, C from the Schur "
-                      "complement of those unknowns, and one back-substitution per solve "
-                      "split around the contact problem (forward elimination, contact "
-                      "problem, backward substitution); predictor and corrector = a "
-                      "plain factorization, C from one back-substitution per pair "
-                      "unknown, and two back-substitutions per solve (the pair forces "
-                      "held, then their change), for comparison.",
-                      Patterns::Selection("condensed on the pairs|predictor and corrector"));
+    add_selection(prm, "Model", model, model_names(),
+                  "How the contraction joints between dam blocks behave: glued = "
+                  "the two faces of every joint are tied together (the monolithic "
+                  "dam); frictional contact = the joints open, close and slide "
+                  "(Mohr-Coulomb with tension cut-off, doc/theory/joints.md §2).");
+    add_selection(prm, "Solver", solver, solver_names(),
+                  "Frictional contact solver: mixed = the mixed method (the "
+                  "effective matrix factorized once, the contact problem on the "
+                  "node pairs only); monolithic = the reference solver on the "
+                  "full system (penalty, refactorized as the contact states "
+                  "change), for verification and benchmarks.");
+    add_selection(prm, "Flexibility coupling", coupling, coupling_names(),
+                  "Which entries of the flexibility matrix C the mixed method "
+                  "keeps: all joints = the exact C; neighbouring joints = only "
+                  "the coupling between pairs of the same or adjacent joints "
+                  "(the paper's sparse approximation).");
+    add_selection(prm, "Mixed method solves", mixed_solves, mixed_solves_names(),
+                  "How a solve of the mixed method reaches the pairs (doc/theory/joints.md "
+                  "§4): condensed on the pairs = the stage's matrix factorized by "
+                  "MUMPS with the pairs' unknowns eliminated last, C from the Schur "
+                  "complement of those unknowns, and one back-substitution per solve "
+                  "split around the contact problem (forward elimination, contact "
+                  "problem, backward substitution); predictor and corrector = a "
+                  "plain factorization, C from one back-substitution per pair "
+                  "unknown, and two back-substitutions per solve (the pair forces "
+                  "held, then their change), for comparison.");
     prm.add_parameter("Friction coefficient", law.friction_coefficient,
                       "Coulomb friction coefficient mu of the joint faces.",
                       Patterns::Double(0.));
@@ -87,11 +83,10 @@ namespace archdam::joints
                       "Monolithic solver only: penalty stiffness of a closed pair as a "
                       "multiple of the largest diagonal entry of the matrix.",
                       Patterns::Double(1.));
-    prm.add_parameter("On non-convergence", on_non_convergence,
-                      "A step whose contact problem does not converge: stop = end the "
-                      "run with a message naming the joint, place, time and residual; "
-                      "continue = go on and flag the step in the summary.",
-                      Patterns::Selection("stop|continue"));
+    add_selection(prm, "On non-convergence", on_non_convergence, on_non_convergence_names(),
+                  "A step whose contact problem does not converge: stop = end the "
+                  "run with a message naming the joint, place, time and residual; "
+                  "continue = go on and flag the step in the summary.");
     prm.add_parameter("Monitor points", monitor_points,
                       "Points whose nearest node pair's opening and slip are recorded "
                       "every step (joint_histories_static.csv, joint_histories_dynamic.csv): "

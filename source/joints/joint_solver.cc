@@ -212,7 +212,7 @@ namespace archdam::joints
   make_joint_solver(const JointParameters &p, const NodePairs &pairs, const double h,
                     const SparseMatrix &A, const time::FactorizedOperator &A_factor)
   {
-    if (p.solver == "monolithic")
+    if (p.solver == Solver::monolithic)
       return std::make_unique<MonolithicJointSolver>(p, pairs, h, A, A_factor);
     return std::make_unique<MixedJointSolver>(p, pairs, h, A_factor);
   }

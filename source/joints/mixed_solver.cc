@@ -136,7 +136,7 @@ namespace archdam::joints
       for (unsigned int i = 0; i < m; ++i)
         for (const auto &[g, v] : B_interface[i])
           C[static_cast<std::size_t>(j) * m + i] += v * G(g, j);
-    if (p.coupling == "neighbouring joints")
+    if (p.coupling == Coupling::neighbouring_joints)
       keep_neighbouring_joints(pairs, C);
   }
 
@@ -420,7 +420,8 @@ namespace archdam::joints
         if (const auto *condensed = A_factor.condensed())
           build_from_schur_complement(*condensed);
         else
-          C = flexibility_matrix(pairs, A_factor, r, 64, p.coupling == "neighbouring joints");
+          C = flexibility_matrix(pairs, A_factor, r, 64,
+                                 p.coupling == Coupling::neighbouring_joints);
         build_time =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         augmentation = augmentation_of(C, h);

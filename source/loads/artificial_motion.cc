@@ -362,15 +362,15 @@ namespace archdam::loads
     using dealii::Patterns::Anything;
     using dealii::Patterns::Double;
     using dealii::Patterns::Integer;
-    using dealii::Patterns::Selection;
-    prm.add_parameter("Target spectrum",
-                      spectrum,
-                      "Target response spectrum (at Damping ratio): "
-                      "NB 35047 (the design spectrum of NB 35047-2015, from "
-                      "Peak ground acceleration, Characteristic period and "
-                      "Maximum amplification) or table (Spectrum table times "
-                      "the Peak ground acceleration).",
-                      Selection("NB 35047|table"));
+    add_selection(prm,
+                  "Target spectrum",
+                  spectrum,
+                  target_spectrum_names(),
+                  "Target response spectrum (at Damping ratio): "
+                  "NB 35047 (the design spectrum of NB 35047-2015, from "
+                  "Peak ground acceleration, Characteristic period and "
+                  "Maximum amplification) or table (Spectrum table times "
+                  "the Peak ground acceleration).");
     prm.add_parameter("Peak ground acceleration",
                       pga,
                       "Horizontal design peak ground acceleration, g (the "
@@ -466,7 +466,7 @@ namespace archdam::loads
   {
     try
       {
-        if (spectrum == "table")
+        if (spectrum == TargetSpectrumKind::table)
           {
             if (table.find_first_not_of(" \t") == std::string::npos)
               throw InputError("Target spectrum = table, but Spectrum table "
@@ -474,12 +474,9 @@ namespace archdam::loads
             return TargetSpectrum::table(pga * standard_gravity,
                                          parse_spectrum_table(table, ""));
           }
-        if (spectrum == "NB 35047")
-          return TargetSpectrum::nb35047(pga * standard_gravity,
-                                         characteristic_period,
-                                         beta_max);
-        throw InputError("Target spectrum '" + spectrum +
-                         "' not recognized (use NB 35047 or table).");
+        return TargetSpectrum::nb35047(pga * standard_gravity,
+                                       characteristic_period,
+                                       beta_max);
       }
     catch (const InputError &e)
       {

@@ -28,36 +28,55 @@ namespace archdam::loads
                    const std::string                       &filename,
                    const std::string                       &context)
     {
-      std::string format = c.format;
-      if (format == "auto")
-        format = has_at2_extension(filename) ? "AT2" : "two-column";
+      RecordFormat format = c.format;
+      if (format == RecordFormat::automatic)
+        format = has_at2_extension(filename) ? RecordFormat::at2 : RecordFormat::two_column;
 
-      if (format == "AT2")
+      switch (format)
         {
-          // Say so rather than ignore a unit the user believes applies.
-          if (c.units != "g")
-            throw InputError(context + "Units = " + c.units +
-                             ", but AT2 files are always in g.");
-          return read_at2(filename, c.scale);
+          case RecordFormat::at2:
+            // Say so rather than ignore a unit the user believes applies.
+            if (c.units != RecordUnits::g)
+              throw InputError(context + "Units = " +
+                               selection_name(c.units, record_units_names()) +
+                               ", but AT2 files are always in g.");
+            return read_at2(filename, c.scale);
+          case RecordFormat::single_column:
+            if (!(c.time_step > 0))
+              throw InputError(context +
+                               "Format = single-column needs the sample "
+                               "spacing: set Time step to a positive value.");
+            return read_single_column(filename,
+                                      c.time_step,
+                                      unit_in_si(c.units),
+                                      c.scale);
+          case RecordFormat::automatic: // resolved above
+          case RecordFormat::two_column:
+            break;
         }
-      if (format == "two-column")
-        return read_two_column(filename, unit_in_si(c.units, context), c.scale);
-      if (format == "single-column")
-        {
-          if (!(c.time_step > 0))
-            throw InputError(context +
-                             "Format = single-column needs the sample "
-                             "spacing: set Time step to a positive value.");
-          return read_single_column(filename,
-                                    c.time_step,
-                                    unit_in_si(c.units, context),
-                                    c.scale);
-        }
-      throw InputError(context + "format '" + c.format +
-                       "' not recognized (use auto, AT2, two-column or "
-                       "single-column).");
+      return read_two_column(filename, unit_in_si(c.units), c.scale);
     }
   } // namespace
+
+
+
+  RecordFormat
+  record_format(const std::string &name, const std::string &context)
+  {
+    if (const auto format = selection_value(name, record_format_names()))
+      return *format;
+    throw InputError(context + "format '" + name + "' not recognized (use " +
+                     selection_choices(record_format_names()) + ").");
+  }
+
+
+
+  std::string
+  record_file_context(const unsigned int d, const std::string &filename)
+  {
+    return "Ground motion, Component " + std::string(1, "xyz"[d]) + ", file '" +
+           filename + "': ";
+  }
 
 
 
@@ -71,15 +90,16 @@ namespace archdam::loads
       {
         Component &c = components[d];
         prm.enter_subsection("Component " + axis[d]);
-        prm.add_parameter(
+        add_selection(
+          prm,
           "Source",
           c.source,
+          motion_source_names(),
           "Where the " + direction[d] +
             " ground acceleration comes from: file (the record named by "
             "File) or generated (an artificial motion matching the target "
             "spectrum of the subsection Generated motion; File is then "
-            "ignored).",
-          dealii::Patterns::Selection("file|generated"));
+            "ignored).");
         prm.add_parameter(
           "File",
           c.file,
@@ -90,20 +110,22 @@ namespace archdam::loads
             "the source tree), which holds the shipped records as "
             "ground_motions/NAME.AT2 (doc/user-guide.md).",
           dealii::Patterns::FileName(dealii::Patterns::FileName::input));
-        prm.add_parameter(
+        add_selection(
+          prm,
           "Format",
           c.format,
+          record_format_names(),
           "File format: AT2 (PEER, in g), two-column (time and acceleration "
           "on each line), single-column (one acceleration per line, spaced "
           "by Time step) or auto (AT2 if the name ends in .AT2, else "
-          "two-column).",
-          dealii::Patterns::Selection("auto|AT2|two-column|single-column"));
-        prm.add_parameter(
+          "two-column).");
+        add_selection(
+          prm,
           "Units",
           c.units,
+          record_units_names(),
           "Unit of the accelerations in a text file; AT2 files are "
-          "always in g.",
-          dealii::Patterns::Selection("g|m/s^2|cm/s^2"));
+          "always in g.");
         prm.add_parameter(
           "Time step",
           c.time_step,
@@ -137,7 +159,7 @@ namespace archdam::loads
         const std::string                        axis = std::string(1, "xyz"[d]);
         std::string                              context;
 
-        if (c.source == "generated")
+        if (c.source == MotionSource::generated)
           {
             context = "Ground motion, Component " + axis + " (generated): ";
             const GenerationSettings settings =
@@ -154,20 +176,15 @@ namespace archdam::loads
             for (double &a : records[d].values)
               a *= c.scale;
           }
-        else if (c.source == "file")
+        else
           {
             if (c.file.empty())
               continue;
             const std::string filename = find_input_file(
               c.file, base_directory, "Ground motion/Component " + axis + "/File");
-            context = "Ground motion, Component " + axis + ", file '" +
-                      filename + "': ";
+            context    = record_file_context(d, filename);
             records[d] = read_component(c, filename, context);
           }
-        else
-          throw InputError("Ground motion, Component " + axis + ": source '" +
-                           c.source +
-                           "' not recognized (use file or generated).");
 
         if (c.processing.any())
           {

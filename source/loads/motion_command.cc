@@ -338,12 +338,15 @@ Errors in the input give one message and exit code 1.
       GroundMotionParameters::Component c;
       // A relative INPUT is looked for in the working directory, then in the
       // data folder, as a case file's records are (base/data_files.h).
-      c.file      = find_input_file(path, "", "INPUT", "the working directory");
-      c.format    = o.text("--format", "auto");
-      c.units     = o.text("--units", "g");
+      c.file = find_input_file(path, "", "INPUT", "the working directory");
+      // No parameter pattern checks the names given to --format and --units:
+      // record_format() and record_units() refuse any other, naming the file.
+      const std::string context = record_file_context(0, c.file);
+      c.format    = record_format(o.text("--format", "auto"), context);
+      c.units     = record_units(o.text("--units", "g"), context);
       c.time_step = o.number("--dt", 0.);
       c.scale     = o.number("--scale", 1.);
-      if (o.has("--dt") && c.format != "single-column")
+      if (o.has("--dt") && c.format != RecordFormat::single_column)
         throw InputError("--dt gives the spacing of a single-column file; use "
                          "it with --format single-column.");
       GroundMotionParameters p;
@@ -586,7 +589,7 @@ Errors in the input give one message and exit code 1.
           if (o.has("--tg") || o.has("--beta-max"))
             throw InputError("--table replaces the NB 35047 spectrum: --tg and "
                              "--beta-max do not apply.");
-          p.spectrum = "table";
+          p.spectrum = TargetSpectrumKind::table;
           p.table    = o.text("--table", "");
         }
       p.duration            = o.number("--duration", 20.);

@@ -334,16 +334,30 @@ namespace archdam::loads
 
 
   double
-  unit_in_si(const std::string &units, const std::string &context)
+  unit_in_si(const RecordUnits units)
   {
-    if (units == "g")
-      return standard_gravity;
-    if (units == "m/s^2")
-      return 1.;
-    if (units == "cm/s^2")
-      return 0.01;
-    throw InputError(context + "unit '" + units +
-                     "' not recognized (use g, m/s^2 or cm/s^2).");
+    switch (units)
+      {
+        case RecordUnits::g:
+          return standard_gravity;
+        case RecordUnits::m_per_s2:
+          return 1.;
+        case RecordUnits::cm_per_s2:
+          return 0.01;
+      }
+    Assert(false, dealii::ExcInternalError());
+    return 0.;
+  }
+
+
+
+  RecordUnits
+  record_units(const std::string &name, const std::string &context)
+  {
+    if (const auto units = selection_value(name, record_units_names()))
+      return *units;
+    throw InputError(context + "unit '" + name + "' not recognized (use " +
+                     selection_choices(record_units_names()) + ").");
   }
 
 

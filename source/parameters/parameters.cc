@@ -122,7 +122,7 @@ namespace archdam
           };
           if (p.static_loads.gravity)
             refuse("Gravity");
-          if (p.static_loads.hydrostatic && p.reservoir.model != "none")
+          if (p.static_loads.hydrostatic && p.reservoir.model != physics::reservoir::Model::none)
             refuse("Hydrostatic pressure");
         }
       p.checkpoints.check();

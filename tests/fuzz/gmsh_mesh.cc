@@ -50,7 +50,7 @@ LLVMFuzzerTestOneInput(const std::uint8_t *data, const std::size_t size)
   std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char *>(data), size);
 
   archdam::geometry::MeshParameters p;
-  p.source    = "gmsh";
+  p.source    = archdam::geometry::MeshSource::gmsh;
   p.gmsh_file = file;
   try
     {

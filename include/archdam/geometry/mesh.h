@@ -1,5 +1,6 @@
 #pragma once
 
+#include <archdam/base/selection.h>
 #include <archdam/geometry/arch_dam.h>
 #include <archdam/geometry/box_mesh.h>
 
@@ -9,10 +10,28 @@
 
 namespace archdam::geometry
 {
+  /// `Mesh/Source`: where the model's mesh comes from.
+  enum class MeshSource
+  {
+    box,      ///< a concrete block on a rock block (box_mesh.h)
+    arch_dam, ///< the parametric arch dam in its canyon (arch_dam.h)
+    gmsh      ///< a mesh read from Mesh/Gmsh/File (gmsh_mesh.h)
+  };
+
+  /// The names of MeshSource in the case file.
+  inline const SelectionNames<MeshSource> &
+  mesh_source_names()
+  {
+    static const SelectionNames<MeshSource> names{{"box", MeshSource::box},
+                                                  {"arch dam", MeshSource::arch_dam},
+                                                  {"gmsh", MeshSource::gmsh}};
+    return names;
+  }
+
   /// The `Mesh` subsection: where the model's mesh comes from.
   struct MeshParameters
   {
-    std::string       source = "box";
+    MeshSource        source = MeshSource::box;
     BoxParameters     box;
     ArchDamParameters arch_dam;
     /// `Mesh/Gmsh/File`: the .msh file of `Source = gmsh` (relative to the

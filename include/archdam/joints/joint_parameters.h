@@ -1,11 +1,98 @@
 #pragma once
 
+#include <archdam/base/selection.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
 
 namespace archdam::joints
 {
+  /// `Contraction joints/Model`: how the joints between dam blocks behave.
+  enum class Model
+  {
+    glued,             ///< the faces tied together (the monolithic dam)
+    frictional_contact ///< the joints open, close and slide
+  };
+
+  /// The names of Model in the case file.
+  inline const SelectionNames<Model> &
+  model_names()
+  {
+    static const SelectionNames<Model> names{{"glued", Model::glued},
+                                             {"frictional contact", Model::frictional_contact}};
+    return names;
+  }
+
+  /// `Contraction joints/Solver`: the solver of the frictional contact.
+  enum class Solver
+  {
+    mixed,     ///< the mixed method on the node pairs (MixedJointSolver, joint_solver.h)
+    monolithic ///< the penalty reference solver on the full system (MonolithicJointSolver)
+  };
+
+  /// The names of Solver in the case file.
+  inline const SelectionNames<Solver> &
+  solver_names()
+  {
+    static const SelectionNames<Solver> names{{"mixed", Solver::mixed},
+                                              {"monolithic", Solver::monolithic}};
+    return names;
+  }
+
+  /// `Contraction joints/Flexibility coupling`: which entries of the
+  /// flexibility matrix the mixed method keeps.
+  enum class Coupling
+  {
+    all_joints,         ///< the exact matrix
+    neighbouring_joints ///< only pairs of the same or adjacent joints
+  };
+
+  /// The names of Coupling in the case file.
+  inline const SelectionNames<Coupling> &
+  coupling_names()
+  {
+    static const SelectionNames<Coupling> names{
+      {"all joints", Coupling::all_joints},
+      {"neighbouring joints", Coupling::neighbouring_joints}};
+    return names;
+  }
+
+  /// `Contraction joints/Mixed method solves`: how a solve of the mixed
+  /// method reaches the pairs (doc/theory/joints.md §4).
+  enum class MixedSolves
+  {
+    condensed_on_the_pairs, ///< the pairs' unknowns last, C from their Schur complement
+    predictor_and_corrector ///< a plain factorization, two back-substitutions per solve
+  };
+
+  /// The names of MixedSolves in the case file.
+  inline const SelectionNames<MixedSolves> &
+  mixed_solves_names()
+  {
+    static const SelectionNames<MixedSolves> names{
+      {"condensed on the pairs", MixedSolves::condensed_on_the_pairs},
+      {"predictor and corrector", MixedSolves::predictor_and_corrector}};
+    return names;
+  }
+
+  /// `Contraction joints/On non-convergence`: what a step whose contact
+  /// problem does not converge does.
+  enum class OnNonConvergence
+  {
+    stop, ///< end the run with a message naming the joint
+    go_on ///< go on and flag the step in the summary
+  };
+
+  /// The names of OnNonConvergence in the case file.
+  inline const SelectionNames<OnNonConvergence> &
+  on_non_convergence_names()
+  {
+    static const SelectionNames<OnNonConvergence> names{
+      {"stop", OnNonConvergence::stop}, {"continue", OnNonConvergence::go_on}};
+    return names;
+  }
+
   /// The Mohr-Coulomb law with tension cut-off of one joint (doc/theory/joints.md §2,
   /// the paper's Table 1). Stresses in Pa, the gap in m.
   struct JointLaw
@@ -21,13 +108,10 @@ namespace archdam::joints
   /// The `Contraction joints` subsection (doc/theory/joints.md).
   struct JointParameters
   {
-    /// glued | frictional contact
-    std::string model = "glued";
-    /// mixed | monolithic
-    std::string solver = "mixed";
-    /// all joints | neighbouring joints
-    std::string coupling = "all joints";
-    std::string mixed_solves = "condensed on the pairs";
+    Model       model        = Model::glued;
+    Solver      solver       = Solver::mixed;
+    Coupling    coupling     = Coupling::all_joints;
+    MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     JointLaw    law;
     /// "k: name = value, ...; ..." overrides of the law for single joints
     std::string per_joint;
@@ -35,8 +119,7 @@ namespace archdam::joints
     double       gap_tolerance   = 1e-9;
     unsigned int max_iterations  = 50000;
     double       penalty_factor  = 1e8;
-    /// stop | continue
-    std::string on_non_convergence = "stop";
+    OnNonConvergence on_non_convergence = OnNonConvergence::stop;
     /// "name: x, y, z; ..." points whose nearest node pair is recorded
     std::string monitor_points;
 
@@ -46,7 +129,7 @@ namespace archdam::joints
     bool
     frictional() const
     {
-      return model == "frictional contact";
+      return model == Model::frictional_contact;
     }
 
     /// The law of joint @p k: the global one with its per-joint overrides.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/base/input_error.h>
+#include <archdam/base/selection.h>
 #include <archdam/loads/acceleration_record.h>
 #include <archdam/loads/design_spectrum.h>
 
@@ -128,6 +129,22 @@ namespace archdam::loads
   generate_artificial_motion(const GenerationSettings &settings,
                              GenerationReport         *report = nullptr);
 
+  /// `Target spectrum` of the generated motion.
+  enum class TargetSpectrumKind
+  {
+    nb35047, ///< the design spectrum of NB 35047-2015 (TargetSpectrum::nb35047)
+    table    ///< Spectrum table times the PGA (TargetSpectrum::table)
+  };
+
+  /// The names of TargetSpectrumKind in the case file.
+  inline const SelectionNames<TargetSpectrumKind> &
+  target_spectrum_names()
+  {
+    static const SelectionNames<TargetSpectrumKind> names{
+      {"NB 35047", TargetSpectrumKind::nb35047}, {"table", TargetSpectrumKind::table}};
+    return names;
+  }
+
   /**
    * The "Generated motion" parameters of the analysis: the target spectrum
    * (NB 35047-2015 or a table), the duration, time step and envelope, the seed
@@ -137,8 +154,7 @@ namespace archdam::loads
    */
   struct ArtificialMotionParameters
   {
-    /// "NB 35047" or "table".
-    std::string spectrum = "NB 35047";
+    TargetSpectrumKind spectrum = TargetSpectrumKind::nb35047;
     /// Horizontal design peak ground acceleration, g.
     double pga = 0.1;
     /// Characteristic period T_g, s.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/base/input_error.h>
+#include <archdam/base/selection.h>
 #include <archdam/loads/acceleration_record.h>
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/record_io.h>
@@ -23,6 +24,59 @@
  */
 namespace archdam::loads
 {
+  /// `Source` of a ground-motion component: where its acceleration comes from.
+  enum class MotionSource
+  {
+    file,     ///< the record named by File
+    generated ///< an artificial motion (artificial_motion.h)
+  };
+
+  /// The names of MotionSource in the case file.
+  inline const SelectionNames<MotionSource> &
+  motion_source_names()
+  {
+    static const SelectionNames<MotionSource> names{{"file", MotionSource::file},
+                                                    {"generated", MotionSource::generated}};
+    return names;
+  }
+
+  /// `Format` of a ground-motion component's record file (archdam-motion
+  /// --format).
+  enum class RecordFormat
+  {
+    automatic,    ///< AT2 if the name ends in .AT2 (any case), else two-column
+    at2,          ///< PEER .AT2 (read_at2)
+    two_column,   ///< time and acceleration (read_two_column)
+    single_column ///< one acceleration a line, spaced by Time step (read_single_column)
+  };
+
+  /// The names of RecordFormat in the case file and on the command line.
+  inline const SelectionNames<RecordFormat> &
+  record_format_names()
+  {
+    static const SelectionNames<RecordFormat> names{
+      {"auto", RecordFormat::automatic},
+      {"AT2", RecordFormat::at2},
+      {"two-column", RecordFormat::two_column},
+      {"single-column", RecordFormat::single_column}};
+    return names;
+  }
+
+  /**
+   * The format named @p name ("auto", "AT2", "two-column" or
+   * "single-column"), for text that no parameter pattern has checked
+   * (archdam-motion --format); InputError starting with @p context for any
+   * other text.
+   */
+  RecordFormat
+  record_format(const std::string &name, const std::string &context);
+
+  /// "Ground motion, Component x, file 'NAME': ", the start of the messages
+  /// about the record file @p filename of component @p d (0 = x, 1 = y,
+  /// 2 = z).
+  std::string
+  record_file_context(const unsigned int d, const std::string &filename);
+
   /**
    * The "Ground motion" parameters: per axis a record file or a generated
    * motion, with optional processing; and the description of the generated
@@ -32,15 +86,12 @@ namespace archdam::loads
   {
     struct Component
     {
-      /// file | generated.
-      std::string source = "file";
+      MotionSource source = MotionSource::file;
       /// Record file; "" means this component is zero (Source = file).
       std::string file;
-      /// auto | AT2 | two-column | single-column (auto: .at2/.AT2 extension
-      /// means AT2, anything else two-column).
-      std::string format = "auto";
-      /// g | m/s^2 | cm/s^2 (text files only; AT2 files are in g).
-      std::string units = "g";
+      RecordFormat format = RecordFormat::automatic;
+      /// Text files only; AT2 files are in g.
+      RecordUnits units = RecordUnits::g;
       /// Sample spacing of a single-column file, s.
       double time_step = 0.;
       /// Dimensionless factor applied to the record; negative flips it.

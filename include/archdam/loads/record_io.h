@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/base/input_error.h>
+#include <archdam/base/selection.h>
 #include <archdam/loads/acceleration_record.h>
 
 #include <istream>
@@ -17,6 +18,25 @@ namespace archdam::loads
   /// Standard gravity (3rd CGPM, 1901), the "g" of PEER .AT2 files and of
   /// every acceleration given in g in ArchDam.
   constexpr double standard_gravity = 9.80665;
+
+  /// The unit of the accelerations in a text record (`Units` of a
+  /// ground-motion component, ground_motion.h; archdam-motion --units).
+  enum class RecordUnits
+  {
+    g,        ///< standard gravity (standard_gravity)
+    m_per_s2, ///< m/s^2
+    cm_per_s2 ///< cm/s^2
+  };
+
+  /// The names of RecordUnits in the case file and on the command line.
+  inline const SelectionNames<RecordUnits> &
+  record_units_names()
+  {
+    static const SelectionNames<RecordUnits> names{{"g", RecordUnits::g},
+                                                   {"m/s^2", RecordUnits::m_per_s2},
+                                                   {"cm/s^2", RecordUnits::cm_per_s2}};
+    return names;
+  }
 
   /**
    * Read a PEER NGA .AT2 file (accelerations in g, converted with the
@@ -68,12 +88,17 @@ namespace archdam::loads
                      const double       to_si,
                      const double       scale = 1.0);
 
-  /**
-   * Size in m/s^2 of the acceleration unit @p units: "g", "m/s^2" or
-   * "cm/s^2"; InputError starting with @p context for anything else.
-   */
+  /// Size in m/s^2 of the acceleration unit @p units.
   double
-  unit_in_si(const std::string &units, const std::string &context);
+  unit_in_si(const RecordUnits units);
+
+  /**
+   * The unit named @p name ("g", "m/s^2" or "cm/s^2"), for text that no
+   * parameter pattern has checked (archdam-motion --units); InputError
+   * starting with @p context for any other text.
+   */
+  RecordUnits
+  record_units(const std::string &name, const std::string &context);
 
   /**
    * Write @p record as a PEER .AT2 file (in g, NPTS and DT on line 4 in the

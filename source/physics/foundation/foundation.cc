@@ -10,21 +10,20 @@ namespace archdam::physics::foundation
   void
   FoundationParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Model", model,
-                      "Foundation model: massless = rock stiffness without "
-                      "inertia, outer boundary fixed, uniform ground motion "
-                      "(relative formulation); massed = rock inertia, total "
-                      "motion, vertically propagating plane waves that "
-                      "reproduce the ground motion at the free surface, and "
-                      "the transmitting boundary below.",
-                      Patterns::Selection("massless|massed"));
-    prm.add_parameter("Transmitting boundary", transmitting_boundary,
-                      "Outer boundary (bottom and sides) of the massed "
-                      "foundation: MTF = Liao's multi-transmitting formula on "
-                      "the scattered motion; viscous = Lysmer dashpots (and "
-                      "springs, see Spring distance) with free-field forces; "
-                      "fixed = free-field motion prescribed (reflects).",
-                      Patterns::Selection("MTF|viscous|fixed"));
+    add_selection(prm, "Model", model, model_names(),
+                  "Foundation model: massless = rock stiffness without "
+                  "inertia, outer boundary fixed, uniform ground motion "
+                  "(relative formulation); massed = rock inertia, total "
+                  "motion, vertically propagating plane waves that "
+                  "reproduce the ground motion at the free surface, and "
+                  "the transmitting boundary below.");
+    add_selection(prm, "Transmitting boundary", transmitting_boundary,
+                  transmitting_boundary_names(),
+                  "Outer boundary (bottom and sides) of the massed "
+                  "foundation: MTF = Liao's multi-transmitting formula on "
+                  "the scattered motion; viscous = Lysmer dashpots (and "
+                  "springs, see Spring distance) with free-field forces; "
+                  "fixed = free-field motion prescribed (reflects).");
     prm.add_parameter("MTF order", mtf_order,
                       "Order N of the multi-transmitting formula.",
                       Patterns::Integer(1, 4));

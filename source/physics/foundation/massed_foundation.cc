@@ -23,7 +23,7 @@ namespace archdam::physics::foundation
                                      const double                     time_step)
     : dt(time_step)
   {
-    if (p.transmitting_boundary == "viscous")
+    if (p.transmitting_boundary == TransmittingBoundary::viscous)
       viscous = std::make_unique<ViscousSpringBoundary>(p, space, materials, free_field);
     else
       {

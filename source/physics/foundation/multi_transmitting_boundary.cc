@@ -33,7 +33,7 @@ namespace archdam::physics::foundation
                                                        const solid::MaterialParameters &materials,
                                                        const FreeField                 &free_field,
                                                        const double                     time_step)
-    : order(p.transmitting_boundary == "MTF" ? p.mtf_order : 0)
+    : order(p.transmitting_boundary == TransmittingBoundary::mtf ? p.mtf_order : 0)
     , dt(time_step)
     , free_field(free_field)
     , comm(space.comm)

@@ -167,7 +167,7 @@ namespace archdam::physics::reservoir
     assemble_water_cells(const fe::FESpace &space, const ReservoirParameters &p,
                          const double g, FluidOperators &ops)
     {
-      const bool   compressible = p.kind() == Model::compressible;
+      const bool   compressible = p.model == Model::compressible;
       const double inv_c2       = compressible ? 1. / (p.sound_speed * p.sound_speed) : 0.;
       const double radiation    = compressible ? 1. / p.sound_speed : 0.;
       const double absorption   = p.bottom_absorption();

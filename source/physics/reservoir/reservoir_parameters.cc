@@ -8,14 +8,13 @@ namespace archdam::physics::reservoir
   void
   ReservoirParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Model", model,
-                      "compressible = pressure in the water cells with the wave "
-                      "equation, radiation upstream and absorbing bottom "
-                      "(doc/theory/reservoir.md, paper eq. 3.1-3.2); incompressible = the "
-                      "same with an infinite sound speed; westergaard = "
-                      "generalized Westergaard added mass on the wetted dam "
-                      "face, no water unknowns; none = empty reservoir.",
-                      Patterns::Selection("compressible|incompressible|westergaard|none"));
+    add_selection(prm, "Model", model, model_names(),
+                  "compressible = pressure in the water cells with the wave "
+                  "equation, radiation upstream and absorbing bottom "
+                  "(doc/theory/reservoir.md, paper eq. 3.1-3.2); incompressible = the "
+                  "same with an infinite sound speed; westergaard = "
+                  "generalized Westergaard added mass on the wetted dam "
+                  "face, no water unknowns; none = empty reservoir.");
     prm.add_parameter("Water density", density, "rho_w [kg/m^3].",
                       Patterns::Double(0., Patterns::Double::max_double_value));
     prm.add_parameter("Sound speed", sound_speed, "Speed of pressure waves c in water [m/s].",
@@ -25,10 +24,9 @@ namespace archdam::physics::reservoir
                       "and banks where no rock is meshed (boundary id 5): 1 = rigid, "
                       "0 = fully absorbing.",
                       Patterns::Double(0., 1.));
-    prm.add_parameter("Free surface", free_surface,
-                      "zero pressure (p = 0) or gravity waves "
-                      "((1/g) p_tt + dp/dn = 0).",
-                      Patterns::Selection("zero pressure|gravity waves"));
+    add_selection(prm, "Free surface", free_surface, free_surface_names(),
+                  "zero pressure (p = 0) or gravity waves "
+                  "((1/g) p_tt + dp/dn = 0).");
     prm.add_parameter("Water level from mesh", level_from_mesh,
                       "Take the water level from the top of the water cells (if "
                       "the mesh has any) instead of 'Water level'.",
@@ -54,32 +52,20 @@ namespace archdam::physics::reservoir
   void
   ReservoirParameters::check() const
   {
-    if (kind() == Model::none)
+    if (model == Model::none)
       return;
     if (density <= 0)
       throw InputError("Reservoir/Water density must be positive (it is " +
                        std::to_string(density) + ").");
-    if (kind() == Model::compressible && sound_speed <= 0)
+    if (model == Model::compressible && sound_speed <= 0)
       throw InputError("Reservoir/Sound speed must be positive for compressible water (it "
                        "is " + std::to_string(sound_speed) + ").");
-  }
-
-  Model
-  ReservoirParameters::kind() const
-  {
-    if (model == "compressible")
-      return Model::compressible;
-    if (model == "incompressible")
-      return Model::incompressible;
-    if (model == "westergaard")
-      return Model::westergaard;
-    return Model::none;
   }
 
   double
   ReservoirParameters::bottom_absorption() const
   {
-    if (kind() != Model::compressible)
+    if (model != Model::compressible)
       return 0.;
     return (1. - reflection) / (sound_speed * (1. + reflection));
   }
@@ -102,8 +88,8 @@ namespace archdam::physics::reservoir
         for (const unsigned int v : cell->vertex_indices())
           top = std::max(top, cell->vertex(v)[dim - 1]);
     const bool has_water = top > -std::numeric_limits<double>::max();
-    if (p.kind() != Model::none && !has_water)
-      throw InputError("Reservoir/Model = " + p.model +
+    if (p.model != Model::none && !has_water)
+      throw InputError("Reservoir/Model = " + selection_name(p.model, model_names()) +
                        " needs water cells (material id 2) in front of the dam, and the "
                        "mesh has none (Mesh/Source = box has no reservoir; use the arch "
                        "dam, or set Reservoir/Model = none).");
@@ -111,7 +97,7 @@ namespace archdam::physics::reservoir
         std::abs(p.water_level - top) > 1e-6 * std::max(1., std::abs(top)))
       throw InputError("Reservoir/Water level = " + std::to_string(p.water_level) +
                        " m, but the water cells reach z = " + std::to_string(top) +
-                       " m: with model " + p.model +
+                       " m: with model " + selection_name(p.model, model_names()) +
                        " the water mesh defines the level (set 'Water level from mesh', "
                        "or change the mesh's water level).");
     return p.level_from_mesh ? top : p.water_level;

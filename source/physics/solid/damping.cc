@@ -10,10 +10,9 @@ namespace archdam::physics::solid
   void
   DampingParameters::add_parameters(ParameterHandler &prm)
   {
-    prm.add_parameter("Mode", mode,
-                      "How Rayleigh damping is given: 'damping ratio' (zeta at "
-                      "two frequencies) or 'coefficients' (alpha and beta).",
-                      Patterns::Selection("damping ratio|coefficients"));
+    add_selection(prm, "Mode", mode, damping_mode_names(),
+                  "How Rayleigh damping is given: 'damping ratio' (zeta at "
+                  "two frequencies) or 'coefficients' (alpha and beta).");
     prm.add_parameter("Mass proportional coefficient", alpha,
                       "Rayleigh alpha [1/s] (Mode = coefficients).",
                       Patterns::Double(0.));
@@ -35,7 +34,7 @@ namespace archdam::physics::solid
   std::pair<double, double>
   DampingParameters::rayleigh_coefficients() const
   {
-    if (mode == "coefficients")
+    if (mode == DampingMode::coefficients)
       return {alpha, beta};
     if (!(first_frequency < second_frequency))
       throw InputError("Damping: 'First frequency' (" + std::to_string(first_frequency) +

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <archdam/base/selection.h>
 #include <archdam/base/types.h>
 #include <archdam/physics/solid/materials.h>
 
@@ -10,6 +11,42 @@
 
 namespace archdam::physics::foundation
 {
+  /// `Foundation/Model`: whether the rock has inertia.
+  enum class Model
+  {
+    massless, ///< stiffness only, outer boundary fixed, relative formulation
+    massed    ///< rock inertia, total motion, plane waves from below
+  };
+
+  /// The names of Model in the case file.
+  inline const SelectionNames<Model> &
+  model_names()
+  {
+    static const SelectionNames<Model> names{{"massless", Model::massless},
+                                             {"massed", Model::massed}};
+    return names;
+  }
+
+  /// `Foundation/Transmitting boundary`: the outer boundary of the massed
+  /// foundation.
+  enum class TransmittingBoundary
+  {
+    mtf,     ///< Liao's multi-transmitting formula (multi_transmitting_boundary.h)
+    viscous, ///< Lysmer dashpots (and springs) (viscous_boundary.h)
+    fixed    ///< the free-field motion prescribed
+  };
+
+  /// The names of TransmittingBoundary in the case file.
+  inline const SelectionNames<TransmittingBoundary> &
+  transmitting_boundary_names()
+  {
+    static const SelectionNames<TransmittingBoundary> names{
+      {"MTF", TransmittingBoundary::mtf},
+      {"viscous", TransmittingBoundary::viscous},
+      {"fixed", TransmittingBoundary::fixed}};
+    return names;
+  }
+
   /**
    * The `Foundation` subsection (doc/theory/foundation.md §1).
    *
@@ -27,9 +64,9 @@ namespace archdam::physics::foundation
    */
   struct FoundationParameters
   {
-    std::string  model                = "massless";
-    std::string  transmitting_boundary = "MTF";
-    unsigned int mtf_order            = 2;
+    Model                model                 = Model::massless;
+    TransmittingBoundary transmitting_boundary = TransmittingBoundary::mtf;
+    unsigned int         mtf_order             = 2;
     /// c_a in m/s; 0 = the rock's wave speed of each component (P for the
     /// component normal to the boundary, S for the tangential ones).
     double artificial_speed = 0.;
@@ -44,7 +81,7 @@ namespace archdam::physics::foundation
     bool
     rock_has_mass() const
     {
-      return model == "massed";
+      return model == Model::massed;
     }
 
     /// Whether the outer-boundary displacement is prescribed in the dynamic
@@ -52,7 +89,7 @@ namespace archdam::physics::foundation
     bool
     prescribes_boundary_motion() const
     {
-      return !rock_has_mass() || transmitting_boundary != "viscous";
+      return !rock_has_mass() || transmitting_boundary != TransmittingBoundary::viscous;
     }
 
     /// Boundary ids whose displacement is constrained (fixed in the static

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <archdam/base/selection.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
@@ -15,14 +17,42 @@ namespace archdam::physics::reservoir
     none            ///< empty reservoir: the water cells are left out
   };
 
+  /// The names of Model in the case file (`Reservoir/Model`).
+  inline const SelectionNames<Model> &
+  model_names()
+  {
+    static const SelectionNames<Model> names{{"compressible", Model::compressible},
+                                             {"incompressible", Model::incompressible},
+                                             {"westergaard", Model::westergaard},
+                                             {"none", Model::none}};
+    return names;
+  }
+
+  /// `Reservoir/Free surface`: the condition on the water surface.
+  enum class FreeSurface
+  {
+    zero_pressure, ///< p = 0
+    gravity_waves  ///< (1/g) p_tt + dp/dn = 0
+  };
+
+  /// The names of FreeSurface in the case file.
+  inline const SelectionNames<FreeSurface> &
+  free_surface_names()
+  {
+    static const SelectionNames<FreeSurface> names{
+      {"zero pressure", FreeSurface::zero_pressure},
+      {"gravity waves", FreeSurface::gravity_waves}};
+    return names;
+  }
+
   /// The `Reservoir` subsection.
   struct ReservoirParameters
   {
-    std::string model           = "none";
+    Model       model           = Model::none;
     double      density         = 1000.;
     double      sound_speed     = 1440.;
     double      reflection      = 1.;
-    std::string free_surface    = "zero pressure";
+    FreeSurface free_surface    = FreeSurface::zero_pressure;
     bool        level_from_mesh = true;
     double      water_level     = 0.;
     std::string pressure_points;
@@ -35,13 +65,11 @@ namespace archdam::physics::reservoir
     void
     check() const;
 
-    Model
-    kind() const;
     /// Whether the water cells carry the pressure field.
     bool
     has_pressure() const
     {
-      return kind() == Model::compressible || kind() == Model::incompressible;
+      return model == Model::compressible || model == Model::incompressible;
     }
     /// q = (1 - alpha_r) / (c (1 + alpha_r)) of the absorbing bottom and banks
     /// (doc/theory/reservoir.md §2); 0 for a rigid bottom or incompressible water.
@@ -50,7 +78,7 @@ namespace archdam::physics::reservoir
     bool
     gravity_waves() const
     {
-      return free_surface == "gravity waves";
+      return free_surface == FreeSurface::gravity_waves;
     }
   };
 } // namespace archdam::physics::reservoir

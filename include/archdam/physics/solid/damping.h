@@ -1,11 +1,30 @@
 #pragma once
 
+#include <archdam/base/selection.h>
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <string>
 
 namespace archdam::physics::solid
 {
+  /// `Damping/Mode`: how the Rayleigh damping is given.
+  enum class DampingMode
+  {
+    damping_ratio, ///< zeta at two frequencies
+    coefficients   ///< alpha and beta
+  };
+
+  /// The names of DampingMode in the case file.
+  inline const SelectionNames<DampingMode> &
+  damping_mode_names()
+  {
+    static const SelectionNames<DampingMode> names{
+      {"damping ratio", DampingMode::damping_ratio},
+      {"coefficients", DampingMode::coefficients}};
+    return names;
+  }
+
   /**
    * Rayleigh damping D = alpha M + beta K (doc/theory/solid.md §4), with alpha and beta
    * given directly or derived from a damping ratio zeta reached at two
@@ -14,7 +33,7 @@ namespace archdam::physics::solid
    */
   struct DampingParameters
   {
-    std::string mode             = "damping ratio";
+    DampingMode mode             = DampingMode::damping_ratio;
     double      alpha            = 0.;
     double      beta             = 0.;
     double      ratio            = 0.05;
