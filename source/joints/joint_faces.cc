@@ -1,5 +1,6 @@
 #include <archdam/base/input_error.h>
 #include <archdam/base/point_text.h>
+#include <archdam/geometry/ids.h>
 #include <archdam/geometry/splitter.h>
 #include <archdam/joints/joint_faces.h>
 
@@ -127,6 +128,21 @@ namespace archdam::joints
     // An edge of side 1 that is not also an edge of side 2 (one of its ends
     // duplicated) carries degree - 1 node pairs inside it.
     std::vector<std::set<unsigned int>> edges(n_joints);
+    // Nodes on the model's truncation (boundary ids 1 and 2: fixed, or
+    // prescribed by the transmitting boundary) move with both sides alike
+    // and are no pairs of the analysis: a joint standing on a fixed base.
+    std::set<unsigned int> truncation_vertices, truncation_lines;
+    if (!pairs.empty())
+      for (const auto &cell : pairs.front().cell_1->get_triangulation().active_cell_iterators())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f) && (cell->face(f)->boundary_id() == ids::foundation_bottom ||
+                                       cell->face(f)->boundary_id() == ids::foundation_sides))
+            {
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                truncation_vertices.insert(cell->face(f)->vertex_index(v));
+              for (const unsigned int l : cell->face(f)->line_indices())
+                truncation_lines.insert(cell->face(f)->line_index(l));
+            }
     for (const auto &p : pairs)
       {
         ++counts[p.joint].faces;
@@ -134,11 +150,12 @@ namespace archdam::joints
         for (const unsigned int v : f1->vertex_indices())
           for (const unsigned int w : f2->vertex_indices())
             if (f1->vertex_index(v) != f2->vertex_index(w) &&
-                f1->vertex(v).distance(f2->vertex(w)) < 1e-12 * (1 + f1->vertex(v).norm()))
+                f1->vertex(v).distance(f2->vertex(w)) < 1e-12 * (1 + f1->vertex(v).norm()) &&
+                truncation_vertices.count(f1->vertex_index(v)) == 0)
               node_pairs[p.joint].emplace(f1->vertex_index(v), f2->vertex_index(w));
         for (const unsigned int l : f1->line_indices())
           {
-            bool shared = false;
+            bool shared = truncation_lines.count(f1->line_index(l)) > 0;
             for (const unsigned int m : f2->line_indices())
               shared = shared || f1->line_index(l) == f2->line_index(m);
             if (!shared)

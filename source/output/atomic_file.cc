@@ -1,6 +1,8 @@
 #include <archdam/base/input_error.h>
 #include <archdam/output/atomic_file.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <hdf5.h>
 
 #include <fcntl.h>
@@ -48,29 +50,6 @@ namespace archdam::output
 
   namespace
   {
-    /// Close what a failed HDF5 write left open (deal.II's parallel HDF5
-    /// writer holds its file and datasets in plain handles): left open, the
-    /// HDF5 library would flush them at exit, after MPI has ended, and crash.
-    void
-    close_hdf5_objects()
-    {
-      const ssize_t n = H5Fget_obj_count(H5F_OBJ_ALL, H5F_OBJ_ALL);
-      if (n <= 0)
-        return;
-      std::vector<hid_t> ids(n);
-      H5Fget_obj_ids(H5F_OBJ_ALL, H5F_OBJ_DATASET | H5F_OBJ_GROUP | H5F_OBJ_DATATYPE |
-                                    H5F_OBJ_ATTR,
-                     n, ids.data());
-      for (const hid_t id : ids)
-        if (id > 0 && H5Oclose(id) < 0)
-          H5Aclose(id);
-      ids.assign(n, 0);
-      H5Fget_obj_ids(H5F_OBJ_ALL, H5F_OBJ_FILE, n, ids.data());
-      for (const hid_t id : ids)
-        if (id > 0)
-          H5Fclose(id);
-    }
-
     /// Standard error sent to /dev/null while it lives: the HDF5 and MPI-IO
     /// layers print their own diagnostics of a failed write there, which the
     /// one message of write_hdf5_file() replaces.
@@ -101,28 +80,53 @@ namespace archdam::output
     private:
       const int saved;
     };
+
+    /// 0 if @p bytes can be written to @p filename (a write of its first
+    /// bytes succeeds and its folder has room for all of them), else the
+    /// errno that says why not.
+    int
+    room_for(const std::string &filename, const double bytes)
+    {
+      errno        = 0;
+      const int fd = ::open(filename.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+      if (fd < 0)
+        return errno;
+      const char probe[4096] = {};
+      const bool written     = ::write(fd, probe, sizeof probe) == ssize_t(sizeof probe) &&
+                           ::fsync(fd) == 0;
+      const int  error = written ? 0 : (errno != 0 ? errno : ENOSPC);
+      ::close(fd);
+      if (error != 0)
+        return error;
+      std::error_code ec;
+      const auto      folder = std::filesystem::path(filename).parent_path();
+      const auto      space  = std::filesystem::space(folder.empty() ? "." : folder, ec);
+      return (!ec && double(space.available) < 1.05 * bytes + 65536) ? ENOSPC : 0;
+    }
   } // namespace
 
   void
-  write_hdf5_file(const std::string &filename, const std::function<void()> &write)
+  write_hdf5_file(const std::string &filename, const double bytes, const MPI_Comm comm,
+                  const std::function<void()> &write)
   {
+    // The HDF5 library cannot be left safely after a write that failed half
+    // way (a file whose flush fails stays open and crashes the library when
+    // it ends), so the room is checked first, by rank 0 for all.
+    int error = dealii::Utilities::MPI::this_mpi_process(comm) == 0 ? room_for(filename, bytes) : 0;
+    error     = dealii::Utilities::MPI::broadcast(comm, error, 0);
+    if (error != 0)
+      throw InputError(cannot_write(filename, error));
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-    int error = 0;
-    {
-      const QuietStandardError quiet;
-      errno = 0;
-      try
-        {
-          write();
-          return;
-        }
-      catch (const std::exception &)
-        {
-          error = errno;
-          close_hdf5_objects();
-        }
-    }
-    throw InputError(cannot_write(filename, error));
+    const QuietStandardError quiet;
+    errno = 0;
+    try
+      {
+        write();
+      }
+    catch (const std::exception &)
+      {
+        throw InputError(cannot_write(filename, errno));
+      }
   }
 
   void

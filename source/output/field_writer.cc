@@ -151,7 +151,12 @@ namespace archdam::output
         DataOutBase::DataOutFilter filter(DataOutBase::DataOutFilterFlags(false, true));
         data_out.write_filtered_data(filter);
         const std::string h5 = "solution_" + Utilities::int_to_string(index, 5) + ".h5";
-        write_hdf5_file(temporary_name(p.directory + "/" + h5), [&] {
+        // Its size: coordinates, cells and every data set, in doubles.
+        double values = (dim + 0.) * filter.n_nodes() + 8. * filter.n_cells();
+        for (unsigned int i = 0; i < filter.n_data_sets(); ++i)
+          values += double(filter.get_data_set_dim(i)) * filter.n_nodes();
+        write_hdf5_file(temporary_name(p.directory + "/" + h5),
+                        8. * Utilities::MPI::sum(values, space.comm), space.comm, [&] {
           data_out.write_hdf5_parallel(filter, temporary_name(p.directory + "/" + h5), space.comm);
         });
         on_rank_zero(space.comm, [&] { commit_temporary(p.directory + "/" + h5); });

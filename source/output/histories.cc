@@ -108,7 +108,8 @@ namespace archdam::output
       for (unsigned int r = 0; r < table.size(); ++r)
         for (unsigned int c = 0; c < names.size(); ++c)
           data(r, c) = table[r][c];
-      write_hdf5_file(temporary_name(hdf5_file), [&] {
+      write_hdf5_file(temporary_name(hdf5_file), 8. * table.size() * names.size(), MPI_COMM_SELF,
+                      [&] {
         HDF5::File h5(temporary_name(hdf5_file), HDF5::File::FileAccessMode::create);
         auto dataset = h5.create_dataset<double>("histories", {table.size(), names.size()});
         dataset.write(data);

@@ -30,7 +30,9 @@ namespace archdam::joints
   /// The joint's faces and node pairs: the coincident support points of side
   /// 1 and side 2 of elements of @p degree that the analysis pairs (the
   /// mesh vertices at degree 1; at degree 2 also each edge whose two sides
-  /// are different edges and each face centre), the number the run reports.
+  /// are different edges and each face centre), less those on the model's
+  /// truncation (boundary ids 1, 2), which move alike on both sides: the
+  /// number the run reports.
   struct JointNodeCount
   {
     unsigned int faces = 0, node_pairs = 0;

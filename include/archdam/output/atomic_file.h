@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/mpi.h>
+
 #include <functional>
 #include <fstream>
 #include <ostream>
@@ -47,9 +49,12 @@ namespace archdam::output
   std::string
   cannot_write(const std::string &filename, int error);
 
-  /// Run @p write, which writes the HDF5 file @p filename, with the HDF5
-  /// library's own error stack kept quiet: a failure is one InputError,
-  /// cannot_write()'s message.
+  /// Run @p write, which writes the HDF5 file @p filename of about @p bytes
+  /// on the processes of @p comm, with the HDF5 library's own error stack
+  /// kept quiet. Room for the file is checked first (a probe write, the
+  /// folder's free space): a file that cannot be written, or a failure of
+  /// the write, is one InputError, cannot_write()'s message. Collective.
   void
-  write_hdf5_file(const std::string &filename, const std::function<void()> &write);
+  write_hdf5_file(const std::string &filename, double bytes, MPI_Comm comm,
+                  const std::function<void()> &write);
 } // namespace archdam::output
