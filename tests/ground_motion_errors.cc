@@ -82,6 +82,10 @@ main(int argc, char **argv)
   });
   // Found in the data folder (read, and empty), and in the case file's
   // folder first when both have it.
+  // Fresh folders: a copy left in gm_base by an earlier run of this test
+  // would be found first.
+  std::filesystem::remove_all("gm_data");
+  std::filesystem::remove_all("gm_base");
   std::filesystem::create_directories("gm_data/ground_motions");
   std::filesystem::create_directories("gm_base/ground_motions");
   write("gm_data/ground_motions/gm_in_data.AT2", "");
