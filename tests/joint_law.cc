@@ -26,6 +26,17 @@
 //     after t = 0.1 s (tolerance 2 %: the load jump is averaged over the
 //     first step, a lag of dt / 2, relative 2 (dt / 2) / t = 1 %); the slip
 //     direction within 0.1 degree.
+//  7. The softening shear key (Law = softening shear key, Softening opening
+//     delta_s = 1 mm, residual values 0): the block is pulled open by
+//     1.2 sigma_t A for a few steps and pushed back shut; kappa, the largest
+//     opening of each pair, is taken from the gaps the test records every
+//     step. Pulled again by a slow ramp (0.5 % of sigma_t A a step), the
+//     joint opens at F = sigma_t (1 - kappa / delta_s) A; in a second run,
+//     shut under its weight W, a slow horizontal ramp starts the slip at
+//     H = c (1 - kappa / delta_s) A + mu W (tolerance 2 %: one ramp step
+//     and the block's vibration). With Law = Mohr-Coulomb the same history
+//     leaves the residual strength 0: opening at F = 0 (the first ramp
+//     step) and slip at H = mu W.
 
 #include <archdam/time/newmark.h>
 
@@ -47,7 +58,8 @@ namespace
     double                            t = 0.;
     bool                              converged = true;
 
-    Run(const joints::JointParameters &jp, const double dt)
+    /// @p alpha: mass-proportional damping [1/s] (0: none).
+    Run(const joints::JointParameters &jp, const double dt, const double alpha = 0.)
     {
       for (const unsigned int d : {0u, 1u, 2u})
         physics::solid::assemble_inertia_load(*m.space, m.materials,
@@ -58,7 +70,7 @@ namespace
       np.time_step = dt;
       np.beta1     = 0.6;
       np.beta2     = 0.3025;
-      newmark = std::make_unique<time::NewmarkIntegrator>(np, m.M, m.K, std::pair<double, double>{0., 0.},
+      newmark = std::make_unique<time::NewmarkIntegrator>(np, m.M, m.K, std::pair<double, double>{alpha, 0.},
                                                           m.space->constraints);
       solver  = joints::make_joint_solver(jp, *m.pairs, newmark->displacement_factor(),
                                          newmark->effective(), newmark->effective_factor());
@@ -98,6 +110,16 @@ namespace
           for (unsigned int c = 0; c < dim; ++c)
             sum[c] += solver->w[dim * i + k] * (*m.pairs)[i].frame[k][c];
       return sum / m.pairs->size();
+    }
+
+    /// The largest opening of every pair so far, updated after each step.
+    std::vector<double> kappa;
+    void
+    track_openings()
+    {
+      kappa.resize(m.pairs->size(), 0.);
+      for (unsigned int i = 0; i < m.pairs->size(); ++i)
+        kappa[i] = std::max(kappa[i], solver->gap(i));
     }
 
     double
@@ -216,4 +238,88 @@ main(int argc, char **argv)
     log << "  all pairs slip, contact problem converged every step: "
         << (r.all(joints::PairState::slip) && r.converged ? "yes" : "NO") << std::endl;
   }
+
+  // 7. The softening shear key against Mohr-Coulomb after the same opening.
+  for (const auto law : {joints::Law::softening_shear_key, joints::Law::mohr_coulomb})
+    {
+      joints::JointParameters jp;
+      jp.model                    = joints::Model::frictional_contact;
+      jp.strength_law             = law;
+      jp.law.friction_coefficient = 0.5;
+      jp.law.tensile_strength     = sigma_t;
+      jp.law.cohesion             = sigma_t;
+      jp.law.softening_opening    = 1e-3;
+      const bool   softening      = law == joints::Law::softening_shear_key;
+      const double W = 2400. * 9.81, F2 = 1.2 * sigma_t * A;
+      log << "7. " << (softening ? "softening shear key" : "Mohr-Coulomb")
+          << ", after an opening kappa:" << std::endl;
+      // opened for 10 ms, then pushed shut until the block has settled (the
+      // mass-proportional damping of these runs, 20 1/s, stops its bouncing)
+      const auto open_and_shut = [&](Run &r, const double push) {
+        for (unsigned int k = 1; k <= 10; ++k)
+          {
+            r.step(F2);
+            r.track_openings();
+          }
+        for (unsigned int k = 1; k <= 300; ++k)
+          {
+            r.step(push);
+            r.track_openings();
+          }
+      };
+      const auto strength_left = [&](const Run &r) {
+        double sum = 0.;
+        for (unsigned int i = 0; i < r.m.pairs->size(); ++i)
+          sum += (softening ? std::max(0., 1. - r.kappa[i] / jp.law.softening_opening) : 0.) *
+                 (*r.m.pairs)[i].area;
+        return sum / A; // the intact fraction of the joint's area
+      };
+      {
+        Run r(jp, dt, 20.);
+        open_and_shut(r, -F2);
+        double kappa_min = 1e300, kappa_max = 0.;
+        for (const double k : r.kappa)
+          {
+            kappa_min = std::min(kappa_min, k);
+            kappa_max = std::max(kappa_max, k);
+          }
+        log << "  kappa between " << std::setprecision(3) << kappa_min * 1e3 << " and "
+            << kappa_max * 1e3 << " mm: " << (kappa_min > 0.2e-3 && kappa_max < 0.8e-3 ? "yes" : "NO")
+            << " (0.2 to 0.8 mm)" << std::endl;
+        const double step_load = 0.005 * sigma_t * A;
+        double       F_open    = -1.;
+        for (unsigned int k = 1; k <= 240 && F_open < 0.; ++k)
+          {
+            r.step(k * step_load);
+            if (r.all(joints::PairState::separation))
+              F_open = k * step_load;
+          }
+        const double expected = sigma_t * A * strength_left(r);
+        if (softening)
+          testing::check_relative("  load when the joint opens again [N]", F_open, expected,
+                                  0.02);
+        else
+          log << "  opens at the first ramp step (residual tensile strength 0): "
+              << (F_open == step_load ? "yes" : "NO") << std::endl;
+        log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO")
+            << std::endl;
+      }
+      {
+        Run r(jp, dt, 20.);
+        open_and_shut(r, -W);
+        const double step_load = 0.002 * W;
+        double       H_slip    = -1.;
+        for (unsigned int k = 1; k <= 1000 && H_slip < 0.; ++k)
+          {
+            r.step(-W, k * step_load);
+            if (r.all(joints::PairState::slip))
+              H_slip = k * step_load;
+          }
+        const double expected = sigma_t * A * strength_left(r) + 0.5 * W;
+        testing::check_relative("  horizontal load when the block slides [N]", H_slip, expected,
+                                0.02);
+        log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO")
+            << std::endl;
+      }
+    }
 }

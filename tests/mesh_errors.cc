@@ -18,6 +18,9 @@
 //  - dam blocks with a gap in their numbers (a Gmsh volume dropped for want
 //    of a physical group leaves a hole) and two neighbouring blocks that do
 //    not touch (no joint between them);
+//  - with frictional joints and the mixed method, a block held by its joint
+//    alone (the static stage would need K^-1; accepted with the monolithic
+//    solver);
 //  - a physical surface inside the model (on a joint);
 //  - malformed files, each caught before deal.II's GridIn reads them (the
 //    fuzz target fuzz_gmsh_mesh found what GridIn does not check): a count
@@ -95,12 +98,14 @@ namespace
     return head.str() + std::to_string(kept) + "\n" + body.str() + "$EndElements\n";
   }
 
+  /// --mesh-only on @p msh, with further @p settings of the case file.
   void
-  run(const std::string &what, const std::string &msh)
+  run(const std::string &what, const std::string &msh, const std::string &settings = "")
   {
     write("mesh_error.prm", "subsection Mesh\n  set Source = gmsh\n  subsection Gmsh\n"
                             "    set File = " + msh + "\n  end\nend\n"
-                            "subsection Output\n  set Directory = mesh_error_results\nend\n");
+                            "subsection Output\n  set Directory = mesh_error_results\nend\n" +
+                              settings);
     const char        *args[] = {"archdam", "mesh_error.prm", "--mesh-only"};
     std::ostringstream out, err;
     const int          code = archdam::run_command_line(3, args, out, err);
@@ -235,6 +240,21 @@ main(int argc, char **argv)
 
   write("connected_blocks.msh", two_blocks(true));
   run("two dam blocks sharing their joint's nodes (accepted)", "connected_blocks.msh");
+  {
+    // block 0 fixed on its far face x = 0 (nodes 1 3 7 5, physical surface
+    // 1), block 1 held by the joint alone: the static stage of the mixed
+    // method has no K^-1 for it, the monolithic solver holds it
+    std::string text = two_blocks(true);
+    text.replace(text.find("$Elements\n2\n"), 12, "$Elements\n3\n");
+    text.replace(text.find("$EndElements"), 0, "3 3 2 1 1 1 3 7 5\n");
+    write("hanging_block.msh", text);
+    const std::string joints =
+      "subsection Contraction joints\n  set Model = frictional contact\n  set Solver = ";
+    run("frictional joints, mixed method: block 1 held by its joint alone", "hanging_block.msh",
+        joints + "mixed\nend\n");
+    run("the same with the monolithic solver (accepted)", "hanging_block.msh",
+        joints + "monolithic\nend\n");
+  }
   write("separate_blocks.msh", two_blocks(false));
   run("two dam blocks meshed separately: joint faces without a partner", "separate_blocks.msh");
   write("blocks_apart.msh", two_blocks(false, 1));

@@ -39,6 +39,15 @@ namespace archdam::joints
                   "plain factorization, C from one back-substitution per pair "
                   "unknown, and two back-substitutions per solve (the pair forces "
                   "held, then their change), for comparison.");
+    add_selection(prm, "Law", strength_law, law_names(),
+                  "How the strength of a node pair evolves (doc/theory/joints.md §2): "
+                  "Mohr-Coulomb = the intact cohesion and tensile strength until the "
+                  "pair first opens or slips, the residual values from then on (the "
+                  "paper's law); softening shear key = cohesion and tensile strength "
+                  "falling linearly from the intact to the residual values as the "
+                  "largest opening the pair has reached grows to Softening opening "
+                  "(keys that crack progressively as the joint opens). Friction is "
+                  "the same in both.");
     prm.add_parameter("Friction coefficient", law.friction_coefficient,
                       "Coulomb friction coefficient mu of the joint faces.",
                       Patterns::Double(0.));
@@ -57,12 +66,17 @@ namespace archdam::joints
                       "Initial normal gap delta_0 of the joints [m] (0 = closed, "
                       "grouted).",
                       Patterns::Double(0.));
+    prm.add_parameter("Softening opening", law.softening_opening,
+                      "Law = softening shear key: the largest opening at which the "
+                      "cohesion and tensile strength have fallen to their residual "
+                      "values [m].",
+                      Patterns::Double(1e-12));
     prm.add_parameter("Per joint", per_joint,
                       "Values for single joints, overriding the ones above: "
                       "'k: Name = value, ...; ...' with k the joint number (0 = "
                       "between blocks 0 and 1) and Name one of Friction coefficient, "
                       "Cohesion, Tensile strength, Residual cohesion, Residual tensile "
-                      "strength, Initial gap.",
+                      "strength, Initial gap, Softening opening.",
                       Patterns::Anything());
     prm.add_parameter("Force tolerance", force_tolerance,
                       "Contact problem convergence: largest change of a pair force in "
@@ -100,7 +114,7 @@ namespace archdam::joints
     struct Override
     {
       unsigned int joint;
-      double JointLaw::*member;
+      double LawParameters::*member;
       double            value;
     };
 
@@ -109,13 +123,14 @@ namespace archdam::joints
     std::vector<Override>
     parse_per_joint(const std::string &per_joint)
     {
-      const std::map<std::string, double JointLaw::*> names{
-        {"Friction coefficient", &JointLaw::friction_coefficient},
-        {"Cohesion", &JointLaw::cohesion},
-        {"Tensile strength", &JointLaw::tensile_strength},
-        {"Residual cohesion", &JointLaw::residual_cohesion},
-        {"Residual tensile strength", &JointLaw::residual_tensile_strength},
-        {"Initial gap", &JointLaw::initial_gap}};
+      const std::map<std::string, double LawParameters::*> names{
+        {"Friction coefficient", &LawParameters::friction_coefficient},
+        {"Cohesion", &LawParameters::cohesion},
+        {"Tensile strength", &LawParameters::tensile_strength},
+        {"Residual cohesion", &LawParameters::residual_cohesion},
+        {"Residual tensile strength", &LawParameters::residual_tensile_strength},
+        {"Initial gap", &LawParameters::initial_gap},
+        {"Softening opening", &LawParameters::softening_opening}};
       std::vector<Override> result;
       for (const auto &entry : Utilities::split_string_list(per_joint, ';'))
         {
@@ -165,10 +180,10 @@ namespace archdam::joints
     }
   } // namespace
 
-  JointLaw
+  LawParameters
   JointParameters::law_of(const unsigned int k) const
   {
-    JointLaw result = law;
+    LawParameters result = law;
     for (const auto &o : parse_per_joint(per_joint))
       if (o.joint == k)
         result.*(o.member) = o.value;

@@ -2,6 +2,7 @@
 #include <archdam/base/input_error.h>
 #include <archdam/joints/joint_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -17,8 +18,10 @@ namespace archdam::joints
     , w_committed(dim * pairs.size(), 0.)
     , state(pairs.size(), PairState::stick)
     , damaged(pairs.size(), false)
+    , largest_opening(pairs.size(), 0.)
     , p(p)
     , h(h)
+    , law(make_joint_law(p.strength_law))
   {
     for (unsigned int i = 0; i < pairs.size(); ++i)
       laws.push_back(p.law_of(pairs[i].joint));
@@ -28,7 +31,11 @@ namespace archdam::joints
   JointSolver::accept()
   {
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      damaged[i] = damaged[i] || state[i] != PairState::stick;
+      {
+        damaged[i] = damaged[i] || state[i] != PairState::stick;
+        if (state[i] == PairState::separation)
+          largest_opening[i] = std::max(largest_opening[i], gap(i));
+      }
     force_committed = force;
     w_committed     = w;
   }
@@ -42,6 +49,7 @@ namespace archdam::joints
     w_committed     = other.w_committed;
     state           = other.state;
     damaged         = other.damaged;
+    largest_opening = other.largest_opening;
   }
 
   double
@@ -111,9 +119,9 @@ namespace archdam::joints
     const double f_norm     = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
     const double t          = std::hypot(f[1], f[2]);
     const double tau        = strength_i.shear_capacity(f[0]);
-    // A pair that opens or slips loses its intact strength at once, also
-    // within the iteration (doc/theory/joints.md §2): strength only decreases, so the
-    // iteration cannot cycle between a broken and an intact pair.
+    // A pair that opens or slips is weakened at once, also within the
+    // iteration (doc/theory/joints.md §2): strength only decreases, so the
+    // iteration cannot cycle between a weaker and a stronger pair.
     const auto separate = [&] {
       state[i]   = PairState::separation;
       damaged[i] = true;
@@ -220,13 +228,15 @@ namespace archdam::joints
   void
   JointSolver::save(std::ostream &out) const
   {
-    binary::write_all(out, force, force_committed, w, w_committed, state, damaged);
+    binary::write_all(out, force, force_committed, w, w_committed, state, damaged,
+                      largest_opening);
   }
 
   void
   JointSolver::load(std::istream &in)
   {
-    binary::read_all(in, force, force_committed, w, w_committed, state, damaged);
+    binary::read_all(in, force, force_committed, w, w_committed, state, damaged,
+                     largest_opening);
     if (state.size() != pairs.size() || force.size() != dim * pairs.size())
       throw InputError("Checkpoint: the saved joint state has " + std::to_string(state.size()) +
                        " node pairs, the model " + std::to_string(pairs.size()) + ".");

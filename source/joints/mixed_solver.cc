@@ -306,7 +306,7 @@ namespace archdam::joints
       for (unsigned int k = 0; k < m; ++k)
         w[k] -= h * column[k] * df;
     };
-    std::vector<double> before, previous_states, tried_states, pgs_force, pgs_w;
+    std::vector<double> before, previous_states, tried_states, pgs_force, pgs_w, pgs_opening;
     std::vector<bool>   pgs_damage;
     unsigned int        unchanged = 0; // sweeps in a row with the same states
     while (step.iterations < p.max_iterations)
@@ -319,15 +319,9 @@ namespace archdam::joints
               return h * C[static_cast<std::size_t>(dim * i + l) * m + dim * i + k];
             };
             // normal: f_xi <= min(sigma_t A, c A / mu), else the pair opens
-            auto       strength_i = strength(i);
-            const auto limit      = [&] {
-              return strength_i.friction > 0. ?
-                       std::min(strength_i.tensile_force,
-                                strength_i.cohesion_force / strength_i.friction) :
-                       strength_i.tensile_force;
-            };
-            double f_xi = force[dim * i] + gap(i) / entry(0, 0);
-            if (f_xi > limit())
+            auto   strength_i = strength(i);
+            double f_xi       = force[dim * i] + gap(i) / entry(0, 0);
+            if (f_xi > strength_i.normal_limit())
               {
                 damaged[i] = true;
                 strength_i = strength(i);
@@ -394,11 +388,13 @@ namespace archdam::joints
         pgs_force    = force;
         pgs_w        = w;
         pgs_damage   = damaged;
+        pgs_opening  = largest_opening;
         if (active_set_iteration(step, active_set_polish))
           return;
-        force   = pgs_force;
-        w       = pgs_w;
-        damaged = pgs_damage;
+        force           = pgs_force;
+        w               = pgs_w;
+        damaged         = pgs_damage;
+        largest_opening = pgs_opening;
       }
   }
 
@@ -470,12 +466,14 @@ namespace archdam::joints
     // if it does not, projected Gauss-Seidel from the committed forces, which
     // converges, with the active set tried again on the states it reaches.
     ContactStep                  step;
-    const std::vector<bool>      damage_at_start = damaged;
-    const std::vector<PairState> states_at_start = state;
+    const std::vector<bool>      damage_at_start  = damaged;
+    const std::vector<double>    opening_at_start = largest_opening;
+    const std::vector<PairState> states_at_start  = state;
     if (!active_set_iteration(step, std::min(p.max_iterations, active_set_limit)))
       {
-        damaged = damage_at_start;
-        state   = states_at_start;
+        damaged         = damage_at_start;
+        largest_opening = opening_at_start;
+        state           = states_at_start;
         projected_gauss_seidel(step);
       }
 

@@ -3,7 +3,8 @@
 #include <archdam/base/types.h>
 #include <archdam/joints/joint_parameters.h>
 
-#include <deal.II/base/tensor.h>
+#include <algorithm>
+#include <memory>
 
 namespace archdam::joints
 {
@@ -15,8 +16,23 @@ namespace archdam::joints
     slip       = 2
   };
 
-  /// Strength of one pair as forces: friction coefficient, cohesion c A and
-  /// tensile strength sigma_t A (intact or residual).
+  /// What a pair's strength may depend on besides its joint's values: its
+  /// past, which only ever weakens it.
+  struct PairHistory
+  {
+    bool   damaged         = false; ///< it has opened or slipped
+    double largest_opening = 0.;    ///< the largest gap it has reached [m]
+  };
+
+  /**
+   * The admissible forces of one pair (doc/theory/joints.md §2): the Coulomb
+   * cone with a tension cut-off, f_xi <= sigma_t A and |f_t| <= c A - mu f_xi
+   * (compression f_xi < 0), as forces. Every contact solver asks the cone
+   * only through this: the state update and the residual
+   * (JointSolver::update_state()), the linearized slip rows f_t = (c A -
+   * mu f_xi) d of the active set, the projections of Gauss-Seidel, the
+   * friction loads of the monolithic solver.
+   */
   struct PairStrength
   {
     double friction, cohesion_force, tensile_force;
@@ -27,8 +43,54 @@ namespace archdam::joints
     {
       return cohesion_force - friction * f_xi;
     }
+
+    /// The largest normal force inside the cone: sigma_t A, or the apex
+    /// c A / mu if that comes first.
+    double
+    normal_limit() const
+    {
+      return friction > 0. ? std::min(tensile_force, cohesion_force / friction) : tensile_force;
+    }
   };
 
-  PairStrength
-  strength_of(const JointLaw &law, double area, bool damaged);
+  /**
+   * A joint law (doc/theory/joints.md §2): the strength of a pair of area
+   * @p area from its joint's values and its history. The cone's shape is
+   * fixed (PairStrength); a law says how its size evolves. The solvers hold
+   * one law for all pairs, chosen by `Contraction joints/Law`
+   * (make_joint_law()); a new law is one more class here and one more name
+   * in Law.
+   */
+  class JointLaw
+  {
+  public:
+    virtual ~JointLaw() = default;
+
+    virtual PairStrength
+    strength(const LawParameters &values, double area, const PairHistory &history) const = 0;
+  };
+
+  /// The paper's law: intact cohesion and tensile strength until the pair
+  /// first opens or slips, the residual ones from then on.
+  class MohrCoulomb : public JointLaw
+  {
+  public:
+    PairStrength
+    strength(const LawParameters &values, double area,
+             const PairHistory &history) const override;
+  };
+
+  /// A shear-key joint: cohesion and tensile strength fall linearly from
+  /// the intact to the residual values as the largest opening reached
+  /// grows from 0 to Softening opening; friction stays.
+  class SofteningShearKey : public JointLaw
+  {
+  public:
+    PairStrength
+    strength(const LawParameters &values, double area,
+             const PairHistory &history) const override;
+  };
+
+  std::unique_ptr<JointLaw>
+  make_joint_law(Law law);
 } // namespace archdam::joints

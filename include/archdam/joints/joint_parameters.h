@@ -93,9 +93,25 @@ namespace archdam::joints
     return names;
   }
 
-  /// The Mohr-Coulomb law with tension cut-off of one joint (doc/theory/joints.md §2,
-  /// the paper's Table 1). Stresses in Pa, the gap in m.
-  struct JointLaw
+  /// `Contraction joints/Law`: how a pair's strength evolves (contact_law.h).
+  enum class Law
+  {
+    mohr_coulomb,       ///< intact strength until the pair opens or slips, then residual
+    softening_shear_key ///< strength softening with the largest opening reached
+  };
+
+  /// The names of Law in the case file.
+  inline const SelectionNames<Law> &
+  law_names()
+  {
+    static const SelectionNames<Law> names{{"Mohr-Coulomb", Law::mohr_coulomb},
+                                           {"softening shear key", Law::softening_shear_key}};
+    return names;
+  }
+
+  /// The values of the law of one joint (doc/theory/joints.md §2, the
+  /// paper's Table 1). Stresses in Pa, lengths in m.
+  struct LawParameters
   {
     double friction_coefficient      = 1.0;
     double cohesion                  = 0.;
@@ -103,6 +119,9 @@ namespace archdam::joints
     double residual_cohesion         = 0.;
     double residual_tensile_strength = 0.;
     double initial_gap               = 0.;
+    /// The opening at which the softening shear key is down to its
+    /// residual strength.
+    double softening_opening = 1e-3;
   };
 
   /// The `Contraction joints` subsection (doc/theory/joints.md).
@@ -112,7 +131,8 @@ namespace archdam::joints
     Solver      solver       = Solver::mixed;
     Coupling    coupling     = Coupling::all_joints;
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
-    JointLaw    law;
+    Law           strength_law = Law::mohr_coulomb;
+    LawParameters law;
     /// "k: name = value, ...; ..." overrides of the law for single joints
     std::string per_joint;
     double       force_tolerance = 1e-8;
@@ -134,7 +154,7 @@ namespace archdam::joints
 
     /// The law of joint @p k: the global one with its per-joint overrides.
     /// Throws InputError for a malformed override or a value out of range.
-    JointLaw
+    LawParameters
     law_of(unsigned int k) const;
 
     /// Throws InputError if `Per joint` is malformed or names a joint the

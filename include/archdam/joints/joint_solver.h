@@ -44,8 +44,8 @@ namespace archdam::joints
     virtual ContactStep
     solve(const Vector &r, const std::vector<double> &w_base, Vector &x) = 0;
 
-    /// Commit the solved step: pairs that opened or slipped lose their
-    /// intact strength for good (doc/theory/joints.md §2).
+    /// Commit the solved step: the openings and slips it made weaken the
+    /// pairs for good (doc/theory/joints.md §2).
     void
     accept();
 
@@ -69,7 +69,12 @@ namespace archdam::joints
     /// Pair values, 3 per pair in the local frame (xi, eta, zeta).
     std::vector<double>    force, force_committed, w, w_committed;
     std::vector<PairState> state;
-    std::vector<bool>      damaged;
+    /// The pairs' histories (PairHistory), only ever weakening them: the
+    /// damage at once within a solve (so that the iteration cannot cycle
+    /// between a broken and an intact pair), the largest opening from the
+    /// committed gaps.
+    std::vector<bool>   damaged;
+    std::vector<double> largest_opening;
 
     /// delta = delta_0 + w_xi of pair i (positive = open).
     double
@@ -82,10 +87,11 @@ namespace archdam::joints
     slip(unsigned int i) const;
 
   protected:
+    /// Pair i's strength from the joint law at its history.
     PairStrength
     strength(unsigned int i) const
     {
-      return strength_of(laws[i], pairs[i].area, damaged[i]);
+      return law->strength(laws[i], pairs[i].area, {damaged[i], largest_opening[i]});
     }
     /// Largest violation of the law in w over all pairs, and where.
     double
@@ -125,9 +131,10 @@ namespace archdam::joints
     void
     start_directions();
 
-    const JointParameters &p;
-    const double           h;
-    std::vector<JointLaw>  laws;
+    const JointParameters     &p;
+    const double               h;
+    std::unique_ptr<JointLaw>  law;
+    std::vector<LawParameters> laws;
     std::vector<double>    w_initial;
   };
 
