@@ -77,8 +77,9 @@ namespace
       a.push_back(std::sin(0.1 * k));
     control[0] = foundation::ControlMotion(loads::uniform_record(a, dt));
     const foundation::FreeField  ff(control, materials.rock, 0., -L);
-    foundation::MassedFoundation massed(fp, space, materials, solid::InertiaOf::dam_and_rock, ff,
+    const auto foundation_boundary = foundation::make_massed_foundation(fp, space, materials, solid::InertiaOf::dam_and_rock, ff,
                                         dt);
+    auto &massed = *foundation_boundary;
     massed.add_springs(K);
     time::NewmarkParameters tp;
     tp.time_step = dt;
@@ -90,7 +91,7 @@ namespace
     massed.start(s.u);
     Run r;
     r.dofs     = space.dof_handler.n_dofs();
-    r.boundary = massed.transmitting_boundary() ? massed.transmitting_boundary()->dofs().size() : 0;
+    r.boundary = massed.prescribed_dofs() ? massed.prescribed_dofs()->dofs.size() : 0;
     Timer timer;
     for (unsigned int k = 0; k < steps; ++k)
       if (variant.update)

@@ -79,11 +79,11 @@ end
   inline CrownResponse
   crown_response(const analysis::Simulation &sim)
   {
-    const auto   &names = sim.histories().columns();
+    const auto   &names = sim.recorder<archdam::output::MonitorHistories>()->columns();
     const auto    crest = column(names, "crest.ux [m]"), base = column(names, "base.ux [m]");
     CrownResponse r;
-    r.static_crest = sim.histories().rows().front()[crest];
-    for (const auto &row : sim.histories().rows())
+    r.static_crest = sim.recorder<archdam::output::MonitorHistories>()->rows().front()[crest];
+    for (const auto &row : sim.recorder<archdam::output::MonitorHistories>()->rows())
       r.peak_relative = std::max(r.peak_relative, std::abs(row[crest] - row[base]));
     const auto calls = sim.timers().get_summary_data(dealii::TimerOutput::n_calls);
     r.factorizations =

@@ -153,8 +153,8 @@ namespace
     archdam::analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
     sim.run();
 
-    const auto  &names = sim.histories().columns();
-    const auto  &rows  = sim.histories().rows();
+    const auto  &names = sim.recorder<archdam::output::MonitorHistories>()->columns();
+    const auto  &rows  = sim.recorder<archdam::output::MonitorHistories>()->rows();
     unsigned int col   = 0;
     for (unsigned int c = 0; c < names.size(); ++c)
       if (names[c] == "tip.ux [m]")

@@ -52,7 +52,7 @@ main(int argc, char **argv)
       const Parameters     p = parameters_from_string(model(foundation));
       analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
       sim.run();
-      const auto e = sim.energy_balance()->terms();
+      const auto e = sim.recorder<archdam::analysis::EnergyBalance>()->terms();
       log << "arch dam, water, joints, " << foundation << " foundation:" << std::endl;
       testing::check_below("  balance error", e.balance_error(), 1e-8);
       auto dry = e;
@@ -65,6 +65,6 @@ main(int argc, char **argv)
                   << " (normal " << e.contact_normal << ")"
                 << " water " << e.water << " water radiated " << e.water_radiated
                 << " error " << e.balance_error() << " dry error " << dry.balance_error()
-                << "\n  " << sim.energy_balance()->line() << std::endl;
+                << "\n  " << sim.recorder<archdam::analysis::EnergyBalance>()->line() << std::endl;
     }
 }

@@ -137,7 +137,7 @@ subsection Time integration
     const Parameters     p = parameters_from_string(prm.str());
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.run();
-    return sim.energy_balance()->terms();
+    return sim.recorder<archdam::analysis::EnergyBalance>()->terms();
   }
 } // namespace
 

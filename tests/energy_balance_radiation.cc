@@ -75,8 +75,9 @@ namespace
       a.push_back(g.second(k * h));
     control[0] = foundation::ControlMotion(loads::uniform_record(a, h));
     const foundation::FreeField free_field(control, materials.rock, 0., -H);
-    foundation::MassedFoundation massed(fp, space, materials, solid::InertiaOf::dam_and_rock,
+    const auto foundation_boundary = foundation::make_massed_foundation(fp, space, materials, solid::InertiaOf::dam_and_rock,
                                         free_field, dt);
+    auto &massed = *foundation_boundary;
     massed.add_springs(K);
     time::NewmarkParameters tp;
     tp.time_step = dt;

@@ -72,10 +72,10 @@ end
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.run();
     Response r{testing::crown_response(sim)};
-    for (const auto &row : sim.pressures()->histories())
+    for (const auto &row : sim.recorder<archdam::output::PressureRecorder>()->histories())
       r.peak_heel_pressure = std::max(r.peak_heel_pressure, std::abs(row[1]));
-    const auto opening = testing::column(sim.joint_histories()->columns(), "crown.opening [m]");
-    for (const auto &row : sim.joint_histories()->rows())
+    const auto opening = testing::column(sim.recorder<archdam::output::JointOutput>()->columns(), "crown.opening [m]");
+    for (const auto &row : sim.recorder<archdam::output::JointOutput>()->rows())
       r.peak_opening = std::max(r.peak_opening, row[opening]);
     return r;
   }

@@ -58,8 +58,9 @@ namespace
     solid::assemble_mass_and_stiffness(space, materials, solid::InertiaOf::dam_and_rock, M, K);
 
     const foundation::FreeField free_field({}, materials.rock, 0., -size);
-    foundation::MassedFoundation massed(fp, space, materials, solid::InertiaOf::dam_and_rock,
+    const auto foundation_boundary = foundation::make_massed_foundation(fp, space, materials, solid::InertiaOf::dam_and_rock,
                                         free_field, dt);
+    auto &massed = *foundation_boundary;
     massed.add_springs(K);
     time::NewmarkParameters tp;
     tp.time_step = dt;

@@ -47,8 +47,9 @@ namespace
     archdam::SparseMatrix M, K;
     solid::assemble_mass_and_stiffness(space, materials, solid::InertiaOf::dam_and_rock, M, K);
     const foundation::FreeField  free_field({}, materials.rock, 0., -30.);
-    foundation::MassedFoundation massed(fp, space, materials, solid::InertiaOf::dam_and_rock,
+    const auto foundation_boundary = foundation::make_massed_foundation(fp, space, materials, solid::InertiaOf::dam_and_rock,
                                         free_field, dt);
+    auto &massed = *foundation_boundary;
     time::NewmarkParameters tp;
     tp.time_step = dt;
     time::NewmarkIntegrator newmark(tp, M, K, {0., 0.}, space.constraints, massed.dashpots());

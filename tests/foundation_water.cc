@@ -436,9 +436,10 @@ namespace
     const physics::foundation::FreeField free_field({}, materials.rock, 0., -30.);
     time::NewmarkParameters              tp;
     tp.time_step = 2e-3;
-    physics::foundation::MassedFoundation massed(fp, space, materials,
+    const auto foundation_boundary = physics::foundation::make_massed_foundation(fp, space, materials,
                                                  solid::InertiaOf::dam_and_rock, free_field,
                                                  tp.time_step);
+    auto &massed = *foundation_boundary;
     const std::pair<double, double> rayleigh{0.5, 0.002};
     reservoir::linear_combination(D, {{rayleigh.first, &M}, {rayleigh.second, &K}});
 

@@ -147,8 +147,8 @@ main(int argc, char **argv)
   // Second method: the monolithic dam.
   log << "DOFs: " << blocks.space().dof_handler.n_dofs() << " with joints, "
       << monolith.space().dof_handler.n_dofs() << " monolithic" << std::endl;
-  const auto &a = blocks.histories().rows(), &b = monolith.histories().rows();
-  const auto &names = monolith.histories().columns();
+  const auto &a = blocks.recorder<archdam::output::MonitorHistories>()->rows(), &b = monolith.recorder<archdam::output::MonitorHistories>()->rows();
+  const auto &names = monolith.recorder<archdam::output::MonitorHistories>()->columns();
   log << "history rows: " << a.size() << " and " << b.size() << std::endl;
   // Round-off scales with the size of the field, not of one component that
   // happens to be near zero (the vertical acceleration on the joint plane):

@@ -86,9 +86,9 @@ namespace
   std::vector<double>
   crest_history(const analysis::Simulation &sim)
   {
-    const auto          col = testing::column(sim.histories().columns(), "crest.ux [m]");
+    const auto          col = testing::column(sim.recorder<archdam::output::MonitorHistories>()->columns(), "crest.ux [m]");
     std::vector<double> h;
-    for (const auto &row : sim.histories().rows())
+    for (const auto &row : sim.recorder<archdam::output::MonitorHistories>()->rows())
       h.push_back(row[col]);
     return h;
   }
@@ -175,7 +175,7 @@ main(int argc, char **argv)
   // run would have ended with a message otherwise.
   log << "  every contact solve converged (the run reached its end time): "
       << (std::abs(sim.state().time - 0.5) < 1e-9 ? "yes" : "NO") << std::endl;
-  const auto &rows = sim.joint_histories()->rows();
+  const auto &rows = sim.recorder<archdam::output::JointOutput>()->rows();
   log << "  joint history rows: " << rows.size() << " (50 steps + the start)" << std::endl;
   double largest_opening = 0.;
   for (unsigned int i = 0; i < joints.pairs.size(); ++i)

@@ -104,11 +104,11 @@ main(int argc, char **argv)
   check_stored("peak opening of joint 3 [m]", number("dynamic|joints|joint 3|peak opening [m]"),
                0.002319766592, 1e-3);
 
-  const auto &names = sim.joint_histories()->columns();
+  const auto &names = sim.recorder<archdam::output::JointOutput>()->columns();
   const auto  a     = std::find(names.begin(), names.end(), "A.opening [m]") - names.begin();
   AssertThrow(a < long(names.size()), ExcMessage("no opening history at A"));
   double largest_at_a = 0.;
-  for (const auto &row : sim.joint_histories()->rows())
+  for (const auto &row : sim.recorder<archdam::output::JointOutput>()->rows())
     largest_at_a = std::max(largest_at_a, row[a]);
   testing::check_below("A's largest opening beyond the crown joint's peak in the summary [m]",
                        largest_at_a - number("dynamic|joints|joint 6|peak opening [m]"), 1e-12);

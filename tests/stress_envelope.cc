@@ -285,8 +285,8 @@ namespace
     sim.run();
     MPI_Barrier(MPI_COMM_WORLD);
     const auto  rows    = read_envelope("envelope_block_results/stress_envelope_dynamic.csv");
-    const auto &history = sim.histories().rows();
-    const auto &names   = sim.histories().columns();
+    const auto &history = sim.recorder<archdam::output::MonitorHistories>()->rows();
+    const auto &names   = sim.recorder<archdam::output::MonitorHistories>()->columns();
     log() << "steps recorded: " << history.size() << std::endl;
 
     for (const auto &[name, x] : points)

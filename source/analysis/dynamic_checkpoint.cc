@@ -84,18 +84,11 @@ namespace archdam::analysis
   void
   Simulation::visit_records(Self &self, Archive &a)
   {
-    // The records so far: monitor, pressure and joint histories (their
-    // files are written anew from them once a resume has read everything), envelopes, the energy
-    // sums, the summary (static and modal results included), field records.
-    a.values(self.peak_stress.value, self.peak_stress.where, self.peak_stress_time);
-    a.records(*self.history);
-    if (self.pressure)
-      a.records(*self.pressure);
-    if (self.joint_output)
-      a.records(*self.joint_output);
-    a.records(*self.stress_envelope);
-    a.records(*self.energy);
-    a.records(*self.fields);
+    // The records so far (their files are written anew from them once a
+    // resume has read everything), then the summary (static and modal
+    // results included).
+    for (const auto &r : self.recorders)
+      a.records(*r);
     a.records(self.summary);
   }
 
@@ -159,10 +152,7 @@ namespace archdam::analysis
                        std::to_string(resume_from->step) + ", or data left over).");
     // Only now, with the whole checkpoint read, are the history files cut
     // back to its rows: a resume refused above leaves them as they were.
-    history->rewrite();
-    if (pressure)
-      pressure->rewrite_history();
-    if (joint_output)
-      joint_output->rewrite_history();
+    for (const auto &r : recorders)
+      r->resumed();
   }
 } // namespace archdam::analysis

@@ -31,10 +31,10 @@ namespace archdam::analysis
   /**
    * The energy balance of the dynamic stage (doc/theory/results.md §7) on the model's
    * own operators: the solid's M, K and Rayleigh damping, the water's
-   * operators, and the foundation's boundary; from the current (static) state.
+   * operators, and the foundation's boundary.
    */
-  void
-  Simulation::start_energy_balance()
+  std::unique_ptr<EnergyBalance>
+  Simulation::make_energy_balance() const
   {
     EnergyBalance::Model model;
     model.space     = fe_space.get();
@@ -51,8 +51,35 @@ namespace archdam::analysis
       }
     else
       model.influence = &influence_load;
-    energy = std::make_unique<EnergyBalance>(model);
-    energy->start(current, joint_solver.get());
+    return std::make_unique<EnergyBalance>(model);
+  }
+
+  void
+  Simulation::make_recorders()
+  {
+    // In the order they finish (the balance's line, then the peaks) and a
+    // checkpoint holds them. A new output is one more line here.
+    const std::string &directory = p.output.directory;
+    recorders.clear();
+    recorders.push_back(make_energy_balance());
+    recorders.push_back(std::make_unique<output::MonitorHistories>(*monitor, directory, comm));
+    if (p.reservoir.has_pressure())
+      recorders.push_back(std::make_unique<output::PressureRecorder>(
+        p.reservoir.pressure_points, p.reservoir.profile_times, *fe_space, directory));
+    if (node_pairs)
+      recorders.push_back(std::make_unique<output::JointOutput>(
+        p.joints, *node_pairs, directory, "dynamic", p.output.field_interval));
+    recorders.push_back(
+      std::make_unique<output::StressEnvelope>(*fe_space, p.materials, directory));
+    recorders.push_back(std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials));
+  }
+
+  output::StepRecord
+  Simulation::step_record() const
+  {
+    return {current,
+            joint_solver.get(),
+            massed_foundation ? Tensor<1, dim>() : ground_motion->acceleration(current.time)};
   }
 
   void
@@ -110,9 +137,6 @@ namespace archdam::analysis
     const unsigned int n_steps = p.time_integration.n_steps(end);
     check_motion_duration(n_steps * dt);
 
-    history = std::make_unique<output::HistoryWriter>(p.output.directory + "/histories.csv",
-                                                      monitor->column_names(), comm);
-
     const auto rayleigh = p.damping.rayleigh_coefficients();
     std::unique_ptr<time::NewmarkIntegrator> newmark;
     screen << "Dynamic stage: factorizing the effective matrix (" << fe_space->dof_handler.n_dofs()
@@ -150,24 +174,19 @@ namespace archdam::analysis
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
 
-    if (!resume_from)
+    if (massed_foundation)
+      massed_foundation->start(current.u);
+    if (resume_from) // the records so far come with the checkpoint
+      read_checkpoint();
+    else
       {
         current.time = 0.;
         current.step = 0;
         current.v    = 0.;
         current.a    = 0.;
-        history->append(monitor->evaluate(current));
-        if (pressure)
-          pressure->record(current);
+        for (const auto &r : recorders)
+          r->start(step_record());
       }
-    stress_envelope = std::make_unique<output::StressEnvelope>(*fe_space, p.materials);
-    if (!resume_from)
-      stress_envelope->update(current.u, current.time);
-    if (massed_foundation)
-      massed_foundation->start(current.u);
-    start_energy_balance();
-    if (resume_from) // after every recorder exists: it continues their records
-      read_checkpoint();
 
     Vector     load;
     fe_space->reinit(load);
@@ -226,45 +245,22 @@ namespace archdam::analysis
               }
             // The results up to the last good step stay: the histories end
             // with it, the summary says why and when the run stopped.
-            history->write_hdf5(p.output.directory + "/histories.h5");
-            if (pressure)
-              pressure->finish();
-            stress_envelope->write(p.output.directory, summary);
+            finish_dynamic_stage(elapsed(), n - first_step);
             summary.set("stopped/reason", stop.what());
             summary.set("stopped/step", stop.step);
             summary.set("stopped/time [s]", stop.time);
             summary.set("stopped/last complete time [s]", (n - 1) * dt);
             if (!checkpoint_problem.empty())
               summary.set("stopped/checkpoint not written", checkpoint_problem);
-            energy->add_to(summary);
             write_summary();
             throw;
           }
-        {
-          // after the check: a stopped run's balance ends with its last good step
-          TimerOutput::Scope t(timer, "dynamic: energy balance");
-          energy->add_step(current,
-                           massed_foundation ? Tensor<1, dim>() :
-                                               ground_motion->acceleration(current.time),
-                           joint_solver.get());
-        }
-        {
-          TimerOutput::Scope t(timer, "dynamic: monitors");
-          history->append(monitor->evaluate(current));
-          if (pressure)
-            pressure->record(current);
-          if (joint_output)
-            joint_output->record(current.time, *joint_solver);
-        }
-        {
-          TimerOutput::Scope t(timer, "dynamic: stress envelope");
-          stress_envelope->update(current.u, current.time);
-        }
-        if (p.output.field_interval > 0 && n % p.output.field_interval == 0)
+        // after the check: a stopped run's records end with its last good step
+        const auto record = step_record();
+        for (const auto &r : recorders)
           {
-            write_fields();
-            if (joint_output)
-              joint_output->write_fields(current.time, *joint_solver);
+            TimerOutput::Scope t(timer, "dynamic: " + r->name());
+            r->record(record);
           }
 
         // Checkpoints by steps or wall time (rank 0's clock decides for all).
@@ -293,37 +289,36 @@ namespace archdam::analysis
             reported_contact_iterations = 0;
           }
       }
-    history->write_hdf5(p.output.directory + "/histories.h5");
-    if (pressure)
-      pressure->finish();
-    stress_envelope->write(p.output.directory, summary);
-    energy->add_to(summary);
-    screen << energy->line() << std::endl;
-    // (Without input work, from rest, every term is round-off and so is
-    // their ratio: nothing to say.)
-    if (const auto terms = energy->terms();
-        terms.input != 0. && terms.balance_error() > EnergyTerms::warning_threshold)
-      {
-        std::ostringstream text;
-        text << std::setprecision(2) << "the energy balance closes only to "
-             << terms.balance_error()
-             << ", more than " << EnergyTerms::warning_threshold
-             << ": some work is accounted for by no term (doc/user-guide.md, \"Energy "
-                "balance\").";
-        warn(text.str());
-      }
+    finish_dynamic_stage(elapsed(), n_steps + 1 - first_step);
+  }
 
+  void
+  Simulation::finish_dynamic_stage(const double wall_time, const unsigned int n_run)
+  {
+    for (const auto &r : recorders)
+      r->finish(summary, screen);
+
+    const double dt       = p.time_integration.time_step;
+    const auto   rayleigh = p.damping.rayleigh_coefficients();
     summary.set("dynamic/time step [s]", dt);
-    summary.set("dynamic/steps", n_steps);
-    summary.set("dynamic/end time [s]", n_steps * dt);
+    summary.set("dynamic/steps", current.step);
+    summary.set("dynamic/end time [s]", current.time);
     summary.set("dynamic/beta1", p.time_integration.beta1);
     summary.set("dynamic/beta2", p.time_integration.beta2);
     summary.set("dynamic/rayleigh alpha [s^-1]", rayleigh.first);
     summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
-    const unsigned int n_run = std::max(n_steps + 1 - first_step, 1u); // steps of this run
-    summary.set("dynamic/wall time per step [s]", elapsed() / n_run);
+    const double steps_run = std::max(n_run, 1u); // steps of this run (a resume: since it)
+    summary.set("dynamic/wall time per step [s]", wall_time / steps_run);
     if (massed_foundation)
       summary.set("dynamic/foundation boundary update per step [s]",
-                  massed_foundation->boundary_update_time() / n_run);
+                  massed_foundation->boundary_update_time() / steps_run);
+    if (joint_solver)
+      {
+        summary.set("dynamic/contact iterations per step/average",
+                    contact_iterations / std::max(current.step, 1u));
+        summary.set("dynamic/contact iterations per step/maximum", max_contact_iterations);
+        if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
+          summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
+      }
   }
 } // namespace archdam::analysis

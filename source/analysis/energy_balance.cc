@@ -338,7 +338,19 @@ namespace archdam::analysis
   }
 
   void
-  EnergyBalance::add_to(output::Summary &summary) const
+  EnergyBalance::start(const output::StepRecord &s)
+  {
+    start(s.state, s.joints);
+  }
+
+  void
+  EnergyBalance::record(const output::StepRecord &s)
+  {
+    add_step(s.state, s.ground_acceleration, s.joints);
+  }
+
+  void
+  EnergyBalance::finish(output::Summary &summary, const dealii::ConditionalOStream &screen)
   {
     const EnergyTerms e = terms();
     const std::string s = "energy balance/";
@@ -361,6 +373,19 @@ namespace archdam::analysis
     if (m.prescribed)
       summary.set(s + "note", "the input work is the net work of the prescribed outer "
                               "boundary (MTF): input minus radiated");
+
+    screen << line() << std::endl;
+    // (Without input work, from rest, every term is round-off and so is
+    // their ratio: nothing to say.)
+    if (e.input != 0. && e.balance_error() > EnergyTerms::warning_threshold)
+      {
+        std::ostringstream text;
+        text << std::setprecision(2) << "the energy balance closes only to "
+             << e.balance_error() << ", more than " << EnergyTerms::warning_threshold
+             << ": some work is accounted for by no term (doc/user-guide.md, \"Energy "
+                "balance\").";
+        output::warn(summary, screen, text.str());
+      }
   }
 
   std::string

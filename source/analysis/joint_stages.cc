@@ -54,10 +54,10 @@ namespace archdam::analysis
     if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
       summary.set("static/time to build the flexibility matrix [s]", mixed->build_time);
 
-    output::JointOutput static_output(p.joints, *node_pairs, p.output.directory, "static");
-    static_output.record(0., *joint_solver);
-    static_output.write_fields(0., *joint_solver);
-    static_output.finish(summary);
+    // The static stage's one state, its pair fields always written.
+    output::JointOutput static_output(p.joints, *node_pairs, p.output.directory, "static", 1);
+    static_output.start(step_record());
+    static_output.finish(summary, screen);
   }
 
   void
@@ -68,13 +68,6 @@ namespace archdam::analysis
     if (joint_solver) // the static state: forces, relative displacements, damage
       solver->set_state(*joint_solver);
     joint_solver = std::move(solver);
-    joint_output = std::make_unique<output::JointOutput>(p.joints, *node_pairs,
-                                                         p.output.directory, "dynamic");
-    if (resume_from) // the records so far come with the checkpoint
-      return;
-    joint_output->record(0., *joint_solver);
-    if (p.output.field_interval > 0)
-      joint_output->write_fields(0., *joint_solver);
   }
 
   void
@@ -93,15 +86,6 @@ namespace archdam::analysis
   {
     summary.set("joints/node pairs", node_pairs->size());
     summary.set("joints/solver", selection_name(p.joints.solver, joints::solver_names()));
-    if (joint_output)
-      {
-        const double steps = joint_output->rows().size() - 1;
-        summary.set("dynamic/contact iterations per step/average", contact_iterations / steps);
-        summary.set("dynamic/contact iterations per step/maximum", max_contact_iterations);
-        if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
-          summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
-        joint_output->finish(summary);
-      }
     summary.set("joints/steps not converged", non_converged_times.size());
     for (unsigned int k = 0; k < std::min<std::size_t>(non_converged_times.size(), 20); ++k)
       summary.set("joints/steps not converged at [s]/" + std::to_string(k),

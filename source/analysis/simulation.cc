@@ -2,6 +2,7 @@
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/geometry/ids.h>
+#include <archdam/geometry/support.h>
 #include <archdam/output/mesh_report.h>
 #include <archdam/output/mesh_writer.h>
 #include <archdam/physics/reservoir/wetted_face_loads.h>
@@ -83,6 +84,29 @@ namespace archdam::analysis
     if (screen.is_active())
       report.print(screen.get_stream());
     report.add_to(summary);
+    check_static_support(model);
+  }
+
+  void
+  Simulation::check_static_support(const Triangulation<dim> &model) const
+  {
+    if (!p.joints.frictional() || p.joints.solver != joints::Solver::mixed ||
+        !p.analysis.runs("static"))
+      return;
+    const auto blocks = geometry::blocks_held_by_joints_alone(model);
+    if (blocks.empty())
+      return;
+    std::string list;
+    for (const unsigned int k : blocks)
+      list += (list.empty() ? "" : ", ") + std::to_string(k);
+    throw InputError(
+      "Static stage: dam block" + std::string(blocks.size() > 1 ? "s " : " ") + list +
+      (blocks.size() > 1 ? " rest" : " rests") +
+      " on joints alone: no part of " + (blocks.size() > 1 ? "them" : "it") +
+      " is tied to the rock or to the model's outer boundary (ids 1, 2). The mixed method "
+      "solves the static stage with K, which has no inverse for such a block "
+      "(doc/theory/joints.md §8). Use Contraction joints/Solver = monolithic, whose "
+      "penalty springs hold the block on its joints, or tie the block to the rock.");
   }
 
   void
@@ -187,14 +211,9 @@ namespace archdam::analysis
     if (p.foundation.rock_has_mass())
       setup_massed_foundation(inertia);
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
-    fields  = std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials);
-    if (p.reservoir.has_pressure())
-      pressure = std::make_unique<output::PressureRecorder>(p.reservoir.pressure_points,
-                                                            p.reservoir.profile_times,
-                                                            *fe_space, p.output.directory);
-
     for (Vector *v : {&u_static, &current.u, &current.v, &current.a})
       fe_space->reinit(*v);
+    make_recorders();
   }
 
   void
@@ -219,24 +238,6 @@ namespace archdam::analysis
   }
 
   void
-  Simulation::write_fields()
-  {
-    if (p.output.field_interval == 0)
-      return;
-    TimerOutput::Scope t(timer, "output");
-    fields->write(current);
-    Vector u;
-    fe_space->reinit_ghosted(u);
-    u = current.u;
-    const auto peak = physics::solid::peak_major_principal_stress(*fe_space, p.materials, u);
-    if (peak.value > peak_stress.value)
-      {
-        peak_stress      = peak;
-        peak_stress_time = current.time;
-      }
-  }
-
-  void
   Simulation::write_summary()
   {
     summary.set("case", p.analysis.case_name);
@@ -244,35 +245,6 @@ namespace archdam::analysis
     summary.set("model/dofs", fe_space->dof_handler.n_dofs());
     summary.set("model/mpi processes", Utilities::MPI::n_mpi_processes(comm));
     summary.set("model/element degree", p.finite_element.degree);
-
-    if (history && !history->rows().empty() && history->columns().size() > 1)
-      {
-        const auto &rows  = history->rows();
-        const auto &names = history->columns();
-        screen << "Peak values (monitors):" << std::endl;
-        for (unsigned int c = 1; c < names.size(); ++c)
-          {
-            unsigned int best = 0;
-            for (unsigned int r = 0; r < rows.size(); ++r)
-              if (std::abs(rows[r][c]) > std::abs(rows[best][c]))
-                best = r;
-            summary.set("peaks/" + names[c] + "/value", rows[best][c]);
-            summary.set("peaks/" + names[c] + "/time [s]", rows[best][0]);
-            screen << "  peak " << names[c] << " = " << std::setprecision(4) << rows[best][c]
-                   << " at t = " << rows[best][0] << " s" << std::endl;
-          }
-      }
-    if (p.output.field_interval > 0 && fe_space->dof_handler.n_dofs() > 0)
-      {
-        summary.set("peaks/major principal stress in the dam [Pa]/value", peak_stress.value);
-        summary.set("peaks/major principal stress in the dam [Pa]/time [s]", peak_stress_time);
-        for (unsigned int d = 0; d < dim; ++d)
-          summary.set("peaks/major principal stress in the dam [Pa]/" +
-                        std::string(1, "xyz"[d]) + " [m]",
-                      peak_stress.where[d]);
-        summary.set("peaks/major principal stress in the dam [Pa]/note",
-                    "maximum over quadrature points at field output times");
-      }
 
     if (node_pairs)
       summarize_joints();
@@ -287,9 +259,7 @@ namespace archdam::analysis
   void
   Simulation::warn(const std::string &text)
   {
-    screen << "Warning: " << text << std::endl;
-    warnings.push_back(text);
-    summary.set("warnings/" + std::to_string(warnings.size()), text);
+    output::warn(summary, screen, text);
   }
 
   void
@@ -331,9 +301,8 @@ namespace archdam::analysis
     free_field = std::make_unique<physics::foundation::FreeField>(
       physics::foundation::FreeField::of_ground_motion(*ground_motion, p.materials.rock, z_top,
                                                        z_bottom));
-    massed_foundation = std::make_unique<physics::foundation::MassedFoundation>(
-      p.foundation, *fe_space, p.materials, inertia, *free_field,
-      p.time_integration.time_step);
+    massed_foundation = physics::foundation::make_massed_foundation(
+      p.foundation, *fe_space, p.materials, inertia, *free_field, p.time_integration.time_step);
     massed_foundation->add_springs(stiffness_matrix);
     using physics::foundation::TransmittingBoundary;
     const TransmittingBoundary boundary = p.foundation.transmitting_boundary;
@@ -348,10 +317,8 @@ namespace archdam::analysis
            << " m; the ground motion reaches the surface after " << std::setprecision(4)
            << free_field->delay(0) << " s (horizontal), " << free_field->delay(dim - 1)
            << " s (vertical)";
-    if (const auto *mtf = massed_foundation->transmitting_boundary();
-        mtf && boundary == TransmittingBoundary::mtf)
-      screen << "; MTF order " << p.foundation.mtf_order << ", largest c_a dt / h = "
-             << mtf->largest_courant_number();
+    if (const std::string details = massed_foundation->details(); !details.empty())
+      screen << "; " << details;
     screen << std::endl;
   }
 } // namespace archdam::analysis

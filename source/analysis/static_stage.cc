@@ -59,7 +59,22 @@ namespace archdam::analysis
                         std::string(1, "xyz"[d]) + " [m]",
                       u[d]);
       }
-    write_fields();
+    // The static state's largest tension in the dam (the dynamic stage's
+    // peak comes from the stress envelope, output/stress_envelope.h).
+    Vector u;
+    fe_space->reinit_ghosted(u);
+    u               = u_static;
+    const auto peak = physics::solid::peak_major_principal_stress(*fe_space, p.materials, u);
+    const std::string key = "static/major principal stress in the dam [Pa]/";
+    summary.set(key + "largest", peak.value);
+    for (unsigned int d = 0; d < dim; ++d)
+      summary.set(key + std::string(1, "xyz"[d]) + " [m]", peak.where[d]);
+    summary.set(key + "note", "the largest over the quadrature points of the dam's cells");
+    if (p.output.field_interval > 0)
+      {
+        TimerOutput::Scope t(timer, "output");
+        own_recorder<output::FieldWriter>()->write(current);
+      }
   }
 
   void

@@ -84,6 +84,13 @@ namespace archdam::output
   {}
 
   void
+  FieldWriter::record(const StepRecord &s)
+  {
+    if (p.field_interval > 0 && s.state.step % p.field_interval == 0)
+      write(s.state);
+  }
+
+  void
   FieldWriter::write(const time::NewmarkState &s)
   {
     const auto names = [](const std::string &u, const std::string &pr) {

@@ -17,11 +17,13 @@ namespace archdam::output
   using namespace dealii;
 
   JointOutput::JointOutput(const joints::JointParameters &p, const joints::NodePairs &pairs,
-                           const std::string &directory, const std::string &stage)
+                           const std::string &directory, const std::string &stage,
+                           const unsigned int field_interval)
     : pairs(pairs)
     , directory(directory)
     , stage(stage)
     , writer(Utilities::MPI::this_mpi_process(pairs.communicator()) == 0)
+    , field_interval(field_interval)
     , peak_opening(pairs.size(), 0.)
     , peak_time(pairs.size(), 0.)
   {
@@ -59,7 +61,23 @@ namespace archdam::output
   }
 
   void
-  JointOutput::record(const double time, const joints::JointSolver &joints)
+  JointOutput::start(const StepRecord &s)
+  {
+    add_row(s.state.time, *s.joints);
+    if (field_interval > 0)
+      write_fields(s.state.time, *s.joints);
+  }
+
+  void
+  JointOutput::record(const StepRecord &s)
+  {
+    add_row(s.state.time, *s.joints);
+    if (field_interval > 0 && s.state.step % field_interval == 0)
+      write_fields(s.state.time, *s.joints);
+  }
+
+  void
+  JointOutput::add_row(const double time, const joints::JointSolver &joints)
   {
     std::vector<double> row{time};
     for (const unsigned int i : monitored)
@@ -145,7 +163,7 @@ namespace archdam::output
   }
 
   void
-  JointOutput::finish(output::Summary &summary) const
+  JointOutput::finish(Summary &summary, const dealii::ConditionalOStream &)
   {
     // Envelope along the height: the largest opening at each z of each joint.
     std::map<std::pair<unsigned int, double>, double> along_height;

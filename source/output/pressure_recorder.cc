@@ -21,17 +21,17 @@ namespace archdam::output
                                      const std::string &profile_times,
                                      const fe::FESpace &space,
                                      const std::string &directory)
-    : space(space)
+    : HistoryRecorder(directory + "/pressure_histories.csv",
+                      [&] {
+                        std::vector<std::string> names{"time [s]"};
+                        for (const auto &pt : parse_monitor_points(point_text))
+                          names.push_back(pt.name + ".p [Pa]");
+                        return names;
+                      }(),
+                      space.comm)
+    , space(space)
     , points(parse_monitor_points(point_text))
     , directory(directory)
-    , table(directory + "/pressure_histories.csv",
-            [&] {
-              std::vector<std::string> names{"time [s]"};
-              for (const auto &pt : points)
-                names.push_back(pt.name + ".p [Pa]");
-              return names;
-            }(),
-            space.comm)
   {
     for (const auto &t : Utilities::split_string_list(profile_times, ','))
       times.push_back(std::stod(t));
@@ -77,30 +77,18 @@ namespace archdam::output
   }
 
   void
-  PressureRecorder::record(const time::NewmarkState &state)
+  PressureRecorder::record(const StepRecord &s)
   {
     if (points.empty())
       return;
-    std::vector<double> row{state.time};
-    const auto          p = evaluate(state.u);
+    std::vector<double> row{s.state.time};
+    const auto          p = evaluate(s.state.u);
     row.insert(row.end(), p.begin(), p.end());
     table.append(row);
   }
 
   void
-  PressureRecorder::save(std::ostream &out) const
-  {
-    table.save(out);
-  }
-
-  void
-  PressureRecorder::load(std::istream &in)
-  {
-    table.load(in);
-  }
-
-  void
-  PressureRecorder::finish() const
+  PressureRecorder::finish(Summary &, const dealii::ConditionalOStream &)
   {
     const auto &rows = table.rows();
     if (points.empty() || rows.empty() || Utilities::MPI::this_mpi_process(space.comm) != 0)

@@ -62,8 +62,10 @@ namespace archdam::output
   }
 
   StressEnvelope::StressEnvelope(const fe::FESpace                        &space,
-                                 const physics::solid::MaterialParameters &materials)
+                                 const physics::solid::MaterialParameters &materials,
+                                 const std::string                        &directory)
     : space(space)
+    , directory(directory)
   {
     const auto &fe = space.fe_collection[fe::FESpace::solid_index];
     const auto &q  = space.face_q_collection[fe::FESpace::solid_index];
@@ -112,9 +114,10 @@ namespace archdam::output
   }
 
   void
-  StressEnvelope::update(const Vector &u, const double t)
+  StressEnvelope::record(const StepRecord &s)
   {
-    ghosted_u = u;
+    const double t = s.state.time;
+    ghosted_u      = s.state.u;
     std::vector<double> values(component.size());
     for (const Face &face : faces)
       {
@@ -170,7 +173,7 @@ namespace archdam::output
   }
 
   void
-  StressEnvelope::write(const std::string &directory, Summary &summary) const
+  StressEnvelope::finish(Summary &summary, const dealii::ConditionalOStream &)
   {
     const std::vector<Entry> all = gather();
     on_rank_zero(space.comm, [&] {
@@ -186,6 +189,13 @@ namespace archdam::output
     });
 
     // The extremes of each part, with place and time (the same on every rank).
+    const auto place = [&](const std::string &key, const double value, const double time,
+                           const Point<dim> &where) {
+      summary.set(key + "/value", value);
+      summary.set(key + "/time [s]", time);
+      for (unsigned int d = 0; d < dim; ++d)
+        summary.set(key + "/" + std::string(1, "xyz"[d]) + " [m]", where[d]);
+    };
     for (const Part part : {Part::upstream, Part::downstream, Part::crest, Part::side})
       {
         const Entry *largest = nullptr, *smallest = nullptr;
@@ -203,18 +213,20 @@ namespace archdam::output
           continue;
         const std::string key = "stress envelope/" + name(part) + "/";
         summary.set(key + "points", n);
-        const auto place = [&](const std::string &what, const double value, const double time,
-                               const Point<dim> &where) {
-          summary.set(key + what + "/value", value);
-          summary.set(key + what + "/time [s]", time);
-          for (unsigned int d = 0; d < dim; ++d)
-            summary.set(key + what + "/" + std::string(1, "xyz"[d]) + " [m]", where[d]);
-        };
-        place("max major principal stress [Pa]", largest->max_s1, largest->time_max_s1,
+        place(key + "max major principal stress [Pa]", largest->max_s1, largest->time_max_s1,
               largest->where);
-        place("min minor principal stress [Pa]", smallest->min_s3, smallest->time_min_s3,
+        place(key + "min minor principal stress [Pa]", smallest->min_s3, smallest->time_min_s3,
               smallest->where);
       }
+    const auto peak = std::max_element(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
+      return a.max_s1 < b.max_s1;
+    });
+    if (peak == all.end())
+      return;
+    const std::string key = "peaks/major principal stress in the dam [Pa]";
+    place(key, peak->max_s1, peak->time_max_s1, peak->where);
+    summary.set(key + "/note", "the largest over the dam's surface points of the stress "
+                               "envelope, every step");
   }
 
   void

@@ -2,6 +2,7 @@
 #include <archdam/output/atomic_file.h>
 #include <archdam/output/summary.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
@@ -80,6 +81,23 @@ namespace archdam::output
   Summary::set(const std::string &path, const std::string &value)
   {
     upsert(entries, path, quoted(value));
+  }
+
+  void
+  Summary::add_warning(const std::string &text)
+  {
+    const std::string prefix = "warnings/";
+    const auto n = std::count_if(entries.begin(), entries.end(), [&](const auto &entry) {
+      return entry.first.compare(0, prefix.size(), prefix) == 0;
+    });
+    set(prefix + std::to_string(n + 1), text);
+  }
+
+  void
+  warn(Summary &summary, const dealii::ConditionalOStream &screen, const std::string &text)
+  {
+    screen << "Warning: " << text << std::endl;
+    summary.add_warning(text);
   }
 
   void

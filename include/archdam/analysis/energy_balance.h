@@ -2,7 +2,7 @@
 
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_solver.h>
-#include <archdam/output/summary.h>
+#include <archdam/output/recorder.h>
 #include <archdam/physics/foundation/viscous_boundary.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 #include <archdam/time/newmark.h>
@@ -94,7 +94,7 @@ namespace archdam::analysis
    * Cost per step: M v and K v (damping; with a prescribed boundary also its
    * columns), H p (water), the boundary reactions, and vector operations.
    */
-  class EnergyBalance
+  class EnergyBalance : public output::Recorder
   {
   public:
     /// What the model is made of; pointers are null where a part is absent.
@@ -132,20 +132,33 @@ namespace archdam::analysis
     EnergyTerms
     terms() const;
 
-    /// Into summary.json under "energy balance".
-    void
-    add_to(output::Summary &summary) const;
-
     /// One line for the run log.
     std::string
     line() const;
 
+    // As the dynamic stage's recorder: start() and add_step() with the
+    // step's state, joints and ground acceleration.
+    std::string
+    name() const override
+    {
+      return "energy balance";
+    }
+    void
+    start(const output::StepRecord &s) override;
+    void
+    record(const output::StepRecord &s) override;
+    /// The terms into summary.json under "energy balance", line() on
+    /// screen, and a warning when the balance error exceeds
+    /// EnergyTerms::warning_threshold.
+    void
+    finish(output::Summary &summary, const dealii::ConditionalOStream &screen) override;
+
     /// The path integrals and the last step's state, for a checkpoint
-    /// (output/checkpoint.h); load() after start().
+    /// (output/checkpoint.h).
     void
-    save(std::ostream &out) const;
+    save(std::ostream &out) const override;
     void
-    load(std::istream &in);
+    load(std::istream &in) override;
 
   private:
     /// x with its constrained entries zero (the condensed matrices act on it

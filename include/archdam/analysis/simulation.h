@@ -4,12 +4,12 @@
 #include <archdam/analysis/modal_analysis.h>
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_faces.h>
-#include <archdam/output/joint_output.h>
 #include <archdam/joints/joint_solver.h>
 #include <archdam/loads/ground_motion.h>
 #include <archdam/output/checkpoint.h>
 #include <archdam/output/field_writer.h>
-#include <archdam/output/histories.h>
+#include <archdam/output/joint_output.h>
+#include <archdam/output/monitor_histories.h>
 #include <archdam/output/monitors.h>
 #include <archdam/output/pressure_recorder.h>
 #include <archdam/output/stress_envelope.h>
@@ -88,25 +88,23 @@ namespace archdam::analysis
     {
       return u_static;
     }
-    /// The monitor histories of the dynamic stage (none before it ran).
-    const output::HistoryWriter &
-    histories() const
+    /// The recorder of type @p R of the dynamic stage (output::MonitorHistories,
+    /// output::PressureRecorder, output::JointOutput, EnergyBalance, ...), or
+    /// null if the case has none; its records are those of the last run.
+    template <typename R>
+    const R *
+    recorder() const
     {
-      AssertThrow(history, dealii::ExcMessage("There are histories only after a dynamic stage."));
-      return *history;
+      for (const auto &r : recorders)
+        if (const auto *found = dynamic_cast<const R *>(r.get()))
+          return found;
+      return nullptr;
     }
     /// The natural modes of the modal stage (empty before it ran).
     const NaturalModes &
     natural_modes() const
     {
       return modes;
-    }
-    /// The hydrodynamic pressure at the Reservoir/Pressure points (models
-    /// with pressure only).
-    const output::PressureRecorder *
-    pressures() const
-    {
-      return pressure.get();
     }
     const output::Monitors &
     monitors() const
@@ -119,9 +117,8 @@ namespace archdam::analysis
     {
       return timer;
     }
-    /// The joints in frictional contact (null for glued joints): node pairs,
-    /// their state after the last stage, and the joint histories of the
-    /// dynamic stage.
+    /// The joints in frictional contact (null for glued joints): node pairs
+    /// and their state after the last stage.
     const joints::NodePairs *
     joint_pairs() const
     {
@@ -132,17 +129,6 @@ namespace archdam::analysis
     {
       return joint_solver.get();
     }
-    const output::JointOutput *
-    joint_histories() const
-    {
-      return joint_output.get();
-    }
-    /// The energy balance of the dynamic stage (null before it ran).
-    const EnergyBalance *
-    energy_balance() const
-    {
-      return energy.get();
-    }
 
   private:
     void
@@ -151,6 +137,11 @@ namespace archdam::analysis
     /// with its report printed and added to the summary.
     void
     build_mesh(dealii::Triangulation<dim> &model);
+    /// The static stage with frictional joints and the mixed method needs
+    /// every dam block held by more than its joints: an InputError naming
+    /// the blocks that are not (geometry/support.h).
+    void
+    check_static_support(const dealii::Triangulation<dim> &model) const;
     void
     run_static_stage();
     void
@@ -177,9 +168,12 @@ namespace archdam::analysis
     /// still strong.
     void
     check_motion_duration(double end);
-    /// Fields of the current state, and the stress peak over the dam.
-    void
-    write_fields();
+    template <typename R>
+    R *
+    own_recorder()
+    {
+      return const_cast<R *>(std::as_const(*this).recorder<R>());
+    }
 
     // Contraction joints/Model = frictional contact (joint_stages.cc).
     /// The pairs' DOFs when the stages' factorizations are condensed on them
@@ -231,10 +225,21 @@ namespace archdam::analysis
     std::unique_ptr<output::CheckpointManifest> resume_from;
     std::string                                 resume_payload;
 
-    /// The energy balance from the current state (dynamic_stage.cc).
+    /// The dynamic stage's recorders (dynamic_stage.cc), made with the model.
     void
-    start_energy_balance();
-    /// Contact iterations, joint peaks and envelopes into the summary.
+    make_recorders();
+    std::unique_ptr<EnergyBalance>
+    make_energy_balance() const;
+    /// The current state as the recorders see it.
+    output::StepRecord
+    step_record() const;
+    /// Finish the recorders and put the stage's settings and costs into the
+    /// summary: at the end, or after the last good step of a stopped run
+    /// (@p n_run steps in @p wall_time seconds).
+    void
+    finish_dynamic_stage(double wall_time, unsigned int n_run);
+    /// Node pairs, solver and the steps whose contact problem did not
+    /// converge, into the summary.
     void
     summarize_joints();
 
@@ -270,24 +275,16 @@ namespace archdam::analysis
     time::NewmarkState                       current;
     NaturalModes                             modes;
     std::unique_ptr<output::Monitors>        monitor;
-    std::unique_ptr<output::HistoryWriter>   history;
-    std::unique_ptr<output::PressureRecorder> pressure;
-    std::unique_ptr<output::FieldWriter>     fields;
-    /// Extreme principal stresses on the dam faces over the dynamic stage.
-    std::unique_ptr<output::StressEnvelope>  stress_envelope;
-    physics::solid::PeakStress               peak_stress{-1e300, {}};
-    double                                   peak_stress_time = 0.;
+    /// The dynamic stage's results (make_recorders()).
+    std::vector<std::unique_ptr<output::Recorder>> recorders;
     output::Summary                          summary;
     std::unique_ptr<joints::NodePairs>       node_pairs;
     std::unique_ptr<joints::JointSolver>     joint_solver;
-    std::unique_ptr<output::JointOutput>     joint_output;
-    std::unique_ptr<EnergyBalance>           energy;
     /// Contact iterations per dynamic step: sum, maximum; flagged steps.
     unsigned long                            contact_iterations = 0;
     unsigned int                             max_contact_iterations = 0;
     /// The largest contact iteration count since the last progress line.
     unsigned int                             reported_contact_iterations = 0;
     std::vector<double>                      non_converged_times;
-    std::vector<std::string>                 warnings;
   };
 } // namespace archdam::analysis

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/output/recorder.h>
 #include <archdam/physics/solid/materials.h>
 #include <archdam/time/newmark.h>
 
@@ -45,9 +46,11 @@ namespace archdam::output
    * principal stress, material id and MPI subdomain; as VTU pieces with a PVTU
    * per output and a PVD time series (`solution.pvd`), and as HDF5 with an
    * XDMF index (`solution.xdmf`). Every file is written atomically, the PVD
-   * and XDMF indexes after the files they list.
+   * and XDMF indexes after the files they list. As a recorder of the
+   * dynamic stage, it writes every Output/Field interval steps (the stage's
+   * initial state is the static stage's, written there).
    */
-  class FieldWriter
+  class FieldWriter : public Recorder
   {
   public:
     FieldWriter(const OutputParameters &p, const fe::FESpace &space,
@@ -57,12 +60,26 @@ namespace archdam::output
     void
     write(const time::NewmarkState &s);
 
+    std::string
+    name() const override
+    {
+      return "fields";
+    }
+    void
+    start(const StepRecord &) override
+    {}
+    void
+    record(const StepRecord &s) override;
+    void
+    finish(Summary &, const dealii::ConditionalOStream &) override
+    {}
+
     /// The records of the fields written so far (PVD, XDMF), for a
     /// checkpoint (output/checkpoint.h).
     void
-    save(std::ostream &out) const;
+    save(std::ostream &out) const override;
     void
-    load(std::istream &in);
+    load(std::istream &in) override;
 
   private:
     const OutputParameters                   &p;

@@ -1,9 +1,12 @@
 #pragma once
 
+#include <archdam/output/recorder.h>
+
 #include <deal.II/base/mpi.h>
 
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace archdam::output
@@ -61,5 +64,34 @@ namespace archdam::output
     std::vector<std::string>         names;
     std::ofstream                    csv;
     std::vector<std::vector<double>> table;
+  };
+
+  /// A recorder whose records are one table of histories: the checkpoint
+  /// saves and loads the table, a resume writes its file anew.
+  class HistoryRecorder : public Recorder
+  {
+  public:
+    void
+    save(std::ostream &out) const override
+    {
+      table.save(out);
+    }
+    void
+    load(std::istream &in) override
+    {
+      table.load(in);
+    }
+    void
+    resumed() override
+    {
+      table.rewrite();
+    }
+
+  protected:
+    HistoryRecorder(std::string file, std::vector<std::string> columns, MPI_Comm comm)
+      : table(std::move(file), std::move(columns), comm)
+    {}
+
+    HistoryWriter table;
   };
 } // namespace archdam::output

@@ -2,7 +2,7 @@
 
 #include <archdam/joints/joint_solver.h>
 #include <archdam/output/histories.h>
-#include <archdam/output/summary.h>
+#include <archdam/output/recorder.h>
 
 #include <memory>
 #include <string>
@@ -24,21 +24,29 @@ namespace archdam::output
    *    opening at its crest (its highest pairs), where and when;
    *  - in the summary, the peak opening of each joint with time and place.
    */
-  class JointOutput
+  class JointOutput : public Recorder
   {
   public:
-    JointOutput(const joints::JointParameters &p, const joints::NodePairs &pairs, const std::string &directory,
-                const std::string &stage);
+    /// The pair fields are written at the stage's start and every
+    /// @p field_interval steps (never with 0).
+    JointOutput(const joints::JointParameters &p, const joints::NodePairs &pairs,
+                const std::string &directory, const std::string &stage,
+                unsigned int field_interval);
 
-    /// One row of histories, and the running envelopes.
+    std::string
+    name() const override
+    {
+      return "joint histories";
+    }
+    /// One row of histories, the running envelopes, and the pair fields at
+    /// the field output steps.
     void
-    record(double time, const joints::JointSolver &joints);
-    /// One VTU of the pair fields at @p time.
+    start(const StepRecord &s) override;
     void
-    write_fields(double time, const joints::JointSolver &joints);
+    record(const StepRecord &s) override;
     /// Envelope files and the per-joint peaks into @p summary.
     void
-    finish(output::Summary &summary) const;
+    finish(Summary &summary, const dealii::ConditionalOStream &screen) override;
 
     const std::vector<std::string> &
     columns() const
@@ -52,23 +60,30 @@ namespace archdam::output
     }
 
     /// The rows, peaks and field records so far, for a checkpoint
-    /// (output/checkpoint.h).
+    /// (output/checkpoint.h); resumed() writes the joint histories file anew
+    /// with its rows.
     void
-    save(std::ostream &out) const;
-    /// Continue after a checkpoint; rewrite_history() then writes the joint
-    /// histories file anew with its rows.
+    save(std::ostream &out) const override;
     void
-    load(std::istream &in);
+    load(std::istream &in) override;
     void
-    rewrite_history()
+    resumed() override
     {
       histories->rewrite();
     }
 
   private:
+    /// One row of histories and the running envelopes at @p time.
+    void
+    add_row(double time, const joints::JointSolver &joints);
+    /// One VTU of the pair fields at @p time.
+    void
+    write_fields(double time, const joints::JointSolver &joints);
+
     const joints::NodePairs                 &pairs;
     const std::string                directory, stage;
     const bool                       writer;
+    const unsigned int               field_interval;
     std::vector<unsigned int>        monitored;
     /// Opening and slip of the monitored pairs.
     std::unique_ptr<output::HistoryWriter> histories;

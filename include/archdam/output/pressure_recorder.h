@@ -3,6 +3,7 @@
 #include <archdam/fe/fe_space.h>
 #include <archdam/output/histories.h>
 #include <archdam/output/monitors.h>
+#include <archdam/output/recorder.h>
 #include <archdam/time/newmark.h>
 
 #include <iosfwd>
@@ -19,7 +20,7 @@ namespace archdam::output
    * min). The FE weights of each point are computed once; an evaluation
    * gathers the few DOF values involved from their owners (one all-reduce).
    */
-  class PressureRecorder
+  class PressureRecorder : public HistoryRecorder
   {
   public:
     /// Throws InputError if a point lies in no water cell.
@@ -30,31 +31,24 @@ namespace archdam::output
     std::vector<double>
     evaluate(const Vector &u) const;
 
-    /// Evaluate and append a row at @p state.time.
+    std::string
+    name() const override
+    {
+      return "pressure";
+    }
+
+    /// Evaluate and append a row at the step's time.
     void
-    record(const time::NewmarkState &state);
+    record(const StepRecord &s) override;
 
     /// Write the profile CSV.
     void
-    finish() const;
+    finish(Summary &summary, const dealii::ConditionalOStream &screen) override;
 
     const std::vector<std::vector<double>> &
     histories() const
     {
       return table.rows();
-    }
-
-    /// The rows so far, for a checkpoint (output/checkpoint.h).
-    void
-    save(std::ostream &out) const;
-    /// Continue after the rows of a checkpoint; rewrite_history() then
-    /// writes pressure_histories.csv anew with them.
-    void
-    load(std::istream &in);
-    void
-    rewrite_history()
-    {
-      table.rewrite();
     }
 
   private:
@@ -68,7 +62,5 @@ namespace archdam::output
     std::vector<double>               times;
     std::vector<Weights>              weights;
     std::string                       directory;
-    /// time, p_1 ... p_n
-    HistoryWriter                     table;
   };
 } // namespace archdam::output

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
-#include <archdam/output/summary.h>
+#include <archdam/output/recorder.h>
 #include <archdam/physics/solid/materials.h>
 
 #include <deal.II/base/point.h>
@@ -46,8 +46,12 @@ namespace archdam::output
    * then grad u = (sum_i u_i grad_unit phi_i) J^-1, a few multiply-adds per
    * DOF. Each rank updates the points of the faces of its own cells; the
    * results are gathered at the end.
+   *
+   * The largest s1 over all points is also the run's peak major principal
+   * stress in the dam (summary: peaks/major principal stress in the dam):
+   * taken every step, so it does not depend on the field output interval.
    */
-  class StressEnvelope
+  class StressEnvelope : public Recorder
   {
   public:
     enum class Part
@@ -68,12 +72,17 @@ namespace archdam::output
       double             min_s3 = 0., time_min_s3 = 0.;
     };
 
-    StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials);
+    StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials,
+                   const std::string &directory);
 
-    /// Take the state @p u (a distributed vector) at time @p t into the
-    /// envelope. Collective (ghost exchange).
+    std::string
+    name() const override
+    {
+      return "stress envelope";
+    }
+    /// Take the state into the envelope. Collective (ghost exchange).
     void
-    update(const Vector &u, double t);
+    record(const StepRecord &s) override;
 
     /// Every rank's entries on every rank, ordered by part, then z, y, x (the
     /// same order for any number of ranks). Collective.
@@ -81,18 +90,18 @@ namespace archdam::output
     gather() const;
 
     /**
-     * Write `stress_envelope_dynamic.csv` in @p directory (rank 0, atomically)
-     * and the extremes of each part into @p summary under "stress envelope/".
-     * Collective.
+     * Write `stress_envelope_dynamic.csv` in the output directory (rank 0,
+     * atomically), the extremes of each part into @p summary under "stress
+     * envelope/" and the largest s1 of all under "peaks/". Collective.
      */
     void
-    write(const std::string &directory, Summary &summary) const;
+    finish(Summary &summary, const dealii::ConditionalOStream &screen) override;
 
     /// The extremes so far on this rank, for a checkpoint (output/checkpoint.h).
     void
-    save(std::ostream &out) const;
+    save(std::ostream &out) const override;
     void
-    load(std::istream &in);
+    load(std::istream &in) override;
 
   private:
     struct Face
@@ -104,6 +113,7 @@ namespace archdam::output
     };
 
     const fe::FESpace        &space;
+    std::string               directory;
     std::vector<Face>         faces;
     std::vector<Entry>        entries; // this rank's points
     /// d(unit coordinates)/dx at each entry's point.

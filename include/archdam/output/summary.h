@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/conditional_ostream.h>
+
 #include <iosfwd>
 #include <map>
 #include <string>
@@ -20,6 +22,9 @@ namespace archdam::output
     set(const std::string &path, double value);
     void
     set(const std::string &path, const std::string &value);
+    /// Keep @p text as the next of the summary's warnings (warnings/N).
+    void
+    add_warning(const std::string &text);
     /// Write as JSON; keys with '/' become nested objects (a '/' inside
     /// brackets, as in a unit [m/s^2], belongs to the key).
     void
@@ -36,4 +41,10 @@ namespace archdam::output
     // path -> JSON-encoded value, in insertion order
     std::vector<std::pair<std::string, std::string>> entries;
   };
+
+  /// Say @p text on @p screen as a warning and keep it in @p summary: what
+  /// does not stop the run but may make its results other than the user
+  /// expects.
+  void
+  warn(Summary &summary, const dealii::ConditionalOStream &screen, const std::string &text);
 } // namespace archdam::output

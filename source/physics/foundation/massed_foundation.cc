@@ -1,6 +1,8 @@
 #include <archdam/physics/foundation/massed_foundation.h>
 
 #include <chrono>
+#include <iomanip>
+#include <sstream>
 
 namespace archdam::physics::foundation
 {
@@ -13,88 +15,192 @@ namespace archdam::physics::foundation
     {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-  } // namespace
 
-  MassedFoundation::MassedFoundation(const FoundationParameters      &p,
-                                     const fe::FESpace               &space,
-                                     const solid::MaterialParameters &materials,
-                                     const solid::InertiaOf           inertia,
-                                     const FreeField                 &free_field,
-                                     const double                     time_step)
-    : dt(time_step)
-  {
-    if (p.transmitting_boundary == TransmittingBoundary::viscous)
-      viscous = std::make_unique<ViscousSpringBoundary>(p, space, materials, free_field);
-    else
+    /// The MTF, or the fixed boundary (the free field prescribed): the
+    /// boundary values computed before each solve.
+    class PrescribedBoundary : public MassedFoundation
+    {
+    public:
+      PrescribedBoundary(const FoundationParameters      &p,
+                         const fe::FESpace               &space,
+                         const solid::MaterialParameters &materials,
+                         const solid::InertiaOf           inertia,
+                         const FreeField                 &free_field,
+                         const double                     time_step)
+        : boundary(p, space, materials, free_field, time_step)
+        , transmitting(p.transmitting_boundary == TransmittingBoundary::mtf)
+        , order(p.mtf_order)
+        , dt(time_step)
       {
-        mtf = std::make_unique<MultiTransmittingBoundary>(p, space, materials, free_field,
-                                                          time_step);
-        prescribed.dofs = mtf->dofs();
+        prescribed.dofs = boundary.dofs();
         solid::assemble_mass_and_stiffness_columns(space, materials, inertia, prescribed.dofs,
                                                    prescribed.mass_columns,
                                                    prescribed.stiffness_columns);
       }
-    space.reinit(load_with_free_field);
-  }
+
+      time::PrescribedDofs *
+      prescribed_dofs() override
+      {
+        return &prescribed;
+      }
+
+      std::string
+      details() const override
+      {
+        if (!transmitting)
+          return "";
+        std::ostringstream text;
+        text << std::setprecision(4) << "MTF order " << order << ", largest c_a dt / h = "
+             << boundary.largest_courant_number();
+        return text.str();
+      }
+
+      void
+      start(const Vector &u0) override
+      {
+        boundary.initialize(u0);
+      }
+
+      void
+      advance(time::NewmarkIntegrator                   &newmark,
+              const Vector                              &load_next,
+              time::NewmarkState                        &s,
+              const time::NewmarkIntegrator::StepSolver &solve) override
+      {
+        auto        start  = std::chrono::steady_clock::now();
+        const auto &values = boundary.next_values(s.time + dt);
+        update_seconds += seconds_since(start);
+        newmark.advance(load_next, s, prescribed, values, solve);
+        start = std::chrono::steady_clock::now();
+        boundary.record(s.u, s.time);
+        update_seconds += seconds_since(start);
+      }
+
+      void
+      save(std::ostream &out) const override
+      {
+        boundary.save(out);
+      }
+
+      void
+      load(std::istream &in) override
+      {
+        boundary.load(in);
+      }
+
+    private:
+      MultiTransmittingBoundary boundary;
+      const bool                transmitting;
+      const unsigned int        order;
+      time::PrescribedDofs      prescribed;
+      const double              dt;
+    };
+
+    /// Lysmer's dashpots (with springs): the free-field forces added to the
+    /// load of each step.
+    class ViscousBoundary : public MassedFoundation
+    {
+    public:
+      ViscousBoundary(const FoundationParameters      &p,
+                      const fe::FESpace               &space,
+                      const solid::MaterialParameters &materials,
+                      const FreeField                 &free_field,
+                      const double                     time_step)
+        : boundary(p, space, materials, free_field)
+        , dt(time_step)
+      {
+        space.reinit(load_with_free_field);
+      }
+
+      void
+      add_springs(SparseMatrix &stiffness) const override
+      {
+        boundary.add_springs(stiffness);
+      }
+
+      const Vector *
+      dashpots() const override
+      {
+        return &boundary.dashpots();
+      }
+
+      const ViscousSpringBoundary *
+      viscous_boundary() const override
+      {
+        return &boundary;
+      }
+
+      void
+      advance(time::NewmarkIntegrator                   &newmark,
+              const Vector                              &load_next,
+              time::NewmarkState                        &s,
+              const time::NewmarkIntegrator::StepSolver &solve) override
+      {
+        const auto start     = std::chrono::steady_clock::now();
+        load_with_free_field = load_next;
+        boundary.add_free_field_load(s.time + dt, load_with_free_field);
+        update_seconds += seconds_since(start);
+        newmark.advance(load_with_free_field, s, solve);
+      }
+
+    private:
+      ViscousSpringBoundary boundary;
+      Vector                load_with_free_field;
+      const double          dt;
+    };
+  } // namespace
 
   void
-  MassedFoundation::add_springs(SparseMatrix &stiffness) const
-  {
-    if (viscous)
-      viscous->add_springs(stiffness);
-  }
+  MassedFoundation::add_springs(SparseMatrix &) const
+  {}
 
   const Vector *
   MassedFoundation::dashpots() const
   {
-    return viscous ? &viscous->dashpots() : nullptr;
+    return nullptr;
+  }
+
+  time::PrescribedDofs *
+  MassedFoundation::prescribed_dofs()
+  {
+    return nullptr;
+  }
+
+  const ViscousSpringBoundary *
+  MassedFoundation::viscous_boundary() const
+  {
+    return nullptr;
+  }
+
+  std::string
+  MassedFoundation::details() const
+  {
+    return "";
   }
 
   void
-  MassedFoundation::start(const Vector &u0)
-  {
-    if (mtf)
-      mtf->initialize(u0);
-  }
+  MassedFoundation::start(const Vector &)
+  {}
 
   void
-  MassedFoundation::advance(time::NewmarkIntegrator                   &newmark,
-                            const Vector                              &load_next,
-                            time::NewmarkState                        &s,
-                            const time::NewmarkIntegrator::StepSolver &solve)
-  {
-    const double t_next = s.time + dt;
-    if (mtf)
-      {
-        auto        start  = std::chrono::steady_clock::now();
-        const auto &values = mtf->next_values(t_next);
-        update_seconds += seconds_since(start);
-        newmark.advance(load_next, s, prescribed, values, solve);
-        start = std::chrono::steady_clock::now();
-        mtf->record(s.u, s.time);
-        update_seconds += seconds_since(start);
-      }
-    else
-      {
-        const auto start = std::chrono::steady_clock::now();
-        load_with_free_field = load_next;
-        viscous->add_free_field_load(t_next, load_with_free_field);
-        update_seconds += seconds_since(start);
-        newmark.advance(load_with_free_field, s, solve);
-      }
-  }
+  MassedFoundation::save(std::ostream &) const
+  {}
 
   void
-  MassedFoundation::save(std::ostream &out) const
-  {
-    if (mtf)
-      mtf->save(out);
-  }
+  MassedFoundation::load(std::istream &)
+  {}
 
-  void
-  MassedFoundation::load(std::istream &in)
+  std::unique_ptr<MassedFoundation>
+  make_massed_foundation(const FoundationParameters      &p,
+                         const fe::FESpace               &space,
+                         const solid::MaterialParameters &materials,
+                         const solid::InertiaOf           inertia,
+                         const FreeField                 &free_field,
+                         const double                     time_step)
   {
-    if (mtf)
-      mtf->load(in);
+    if (p.transmitting_boundary == TransmittingBoundary::viscous)
+      return std::make_unique<ViscousBoundary>(p, space, materials, free_field, time_step);
+    return std::make_unique<PrescribedBoundary>(p, space, materials, inertia, free_field,
+                                                time_step);
   }
 } // namespace archdam::physics::foundation

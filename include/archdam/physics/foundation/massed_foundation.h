@@ -8,16 +8,20 @@
 #include <archdam/physics/solid/solid_operators.h>
 #include <archdam/time/newmark.h>
 
+#include <iosfwd>
 #include <memory>
+#include <string>
 
 namespace archdam::physics::foundation
 {
   /**
    * The outer boundary of a massed foundation in the dynamic stage
-   * (doc/theory/foundation.md §7-§9), whichever its kind: a step with the MTF (or the fixed
-   * boundary) prescribes the boundary displacements computed before the
-   * solve (time::PrescribedDofs); a step with the viscous boundary adds the
-   * free-field forces to the load, its dashpots being part of Kbar.
+   * (doc/theory/foundation.md §7-§9), whichever its kind: a step with the MTF
+   * (or the fixed boundary) prescribes the boundary displacements computed
+   * before the solve (time::PrescribedDofs); a step with the viscous boundary
+   * adds the free-field forces to the load, its dashpots being part of Kbar.
+   * Each kind is one implementation of this interface; make_massed_foundation()
+   * builds the one `Foundation/Transmitting boundary` names.
    *
    * Use: add_springs() to the stiffness before anything is factorized, make
    * the integrator with dashpots(), start() from the initial state, then
@@ -26,33 +30,42 @@ namespace archdam::physics::foundation
   class MassedFoundation
   {
   public:
-    MassedFoundation(const FoundationParameters      &p,
-                     const fe::FESpace               &space,
-                     const solid::MaterialParameters &materials,
-                     solid::InertiaOf                 inertia,
-                     const FreeField                 &free_field,
-                     double                           time_step);
+    virtual ~MassedFoundation() = default;
 
     /// The springs of the viscous-spring boundary (nothing for the others).
-    void
+    virtual void
     add_springs(SparseMatrix &stiffness) const;
 
     /// The dashpots of the viscous boundary for the integrator, else nullptr.
-    const Vector *
+    virtual const Vector *
     dashpots() const;
 
+    /// The boundary DOFs a step prescribes (MTF, fixed), else nullptr.
+    virtual time::PrescribedDofs *
+    prescribed_dofs();
+
+    /// The viscous boundary (for the energy balance's free-field work),
+    /// else nullptr.
+    virtual const ViscousSpringBoundary *
+    viscous_boundary() const;
+
+    /// What the run log says about the boundary beyond its name (e.g. the
+    /// MTF's order and Courant number), empty if nothing.
+    virtual std::string
+    details() const;
+
     /// The dynamic stage starts at rest from @p u0 at t = 0.
-    void
+    virtual void
     start(const Vector &u0);
 
     /// One step from t_n to t_{n+1} under the load @p load_next (no
     /// free-field terms in it) at t_{n+1}; @p solve as in
     /// NewmarkIntegrator::advance() (e.g. the joints' contact solve).
-    void
+    virtual void
     advance(time::NewmarkIntegrator                    &newmark,
             const Vector                               &load_next,
             time::NewmarkState                         &s,
-            const time::NewmarkIntegrator::StepSolver &solve = {});
+            const time::NewmarkIntegrator::StepSolver &solve = {}) = 0;
 
     /// Wall time spent in the boundary update (MTF values and history, or
     /// free-field forces), s.
@@ -62,42 +75,23 @@ namespace archdam::physics::foundation
       return update_seconds;
     }
 
-    /// The prescribed outer boundary (MTF and fixed boundary; nullptr for the
-    /// viscous one), whose columns hold the solid's M and K: the coupled
-    /// dam-water system extends them to its own
-    /// (reservoir::form_coupled_columns) before the first step.
-    time::PrescribedDofs *
-    prescribed_dofs()
-    {
-      return mtf ? &prescribed : nullptr;
-    }
-
-    const MultiTransmittingBoundary *
-    transmitting_boundary() const
-    {
-      return mtf.get();
-    }
-    /// The viscous boundary (nullptr for the prescribed ones).
-    const ViscousSpringBoundary *
-    viscous_boundary() const
-    {
-      return viscous.get();
-    }
-
-    /// The boundary's state (MTF histories; the viscous boundary has none),
-    /// for a checkpoint (output/checkpoint.h); load() after start().
-    void
+    /// The boundary's histories, for a checkpoint (output/checkpoint.h).
+    virtual void
     save(std::ostream &out) const;
-    void
+    virtual void
     load(std::istream &in);
 
-  private:
-    std::unique_ptr<MultiTransmittingBoundary> mtf;
-    std::unique_ptr<ViscousSpringBoundary>     viscous;
-    time::PrescribedDofs                       prescribed;
-    /// The viscous boundary's step load: the stage's plus the free field's.
-    Vector                                     load_with_free_field;
-    double                                     dt;
-    double                                     update_seconds = 0.;
+  protected:
+    double update_seconds = 0.;
   };
+
+  /// The massed foundation with the outer boundary @p p chooses
+  /// (Foundation/Transmitting boundary), for time step @p time_step.
+  std::unique_ptr<MassedFoundation>
+  make_massed_foundation(const FoundationParameters      &p,
+                         const fe::FESpace               &space,
+                         const solid::MaterialParameters &materials,
+                         solid::InertiaOf                 inertia,
+                         const FreeField                 &free_field,
+                         double                           time_step);
 } // namespace archdam::physics::foundation
