@@ -1,7 +1,7 @@
 // The `archdam-motion` command: generate, convert, scale and inspect ground
-// motions (see include/archdam/loads/motion_command.h and `--help`). MPI set-up
-// here; errors are reported there (exit code 1 for bad input).
-#include <archdam/loads/motion_command.h>
+// motions (see include/archdam/application/motion_command.h and `--help`).
+// MPI set-up here; errors are reported there (exit code 1 for bad input).
+#include <archdam/application/motion_command.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -13,7 +13,7 @@ main(int argc, char **argv)
   try
     {
       dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-      return archdam::loads::run_motion_command(argc, argv, std::cout, std::cerr);
+      return archdam::run_motion_command(argc, argv, std::cout, std::cerr);
     }
   catch (const std::exception &e)
     {

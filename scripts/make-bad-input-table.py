@@ -93,7 +93,7 @@ UNTRIED = """
 | Gmsh's own reader fails on a file that passed the format checks | `source/geometry/gmsh_mesh.cc` |
 | a joint vertex on two joints, a joint face without its partner on the next block | `source/joints/joint_faces.cc` |
 | a result file cannot be appended to (disk full) | `source/output/atomic_file.cc` |
-| `archdam-motion` option combinations (`--baseline-degree` without `--baseline`, `--target-pga` <= 0, `--spectrum-damping` out of range, `scale` without an output, a plot without matplotlib) | `source/loads/motion_command.cc` |
+| `archdam-motion` option combinations (`--baseline-degree` without `--baseline`, `--target-pga` <= 0, `--spectrum-damping` out of range, `scale` without an output) | `source/application/motion_command.cc` |
 """
 
 

@@ -2,7 +2,8 @@
 """Plot a ground motion: acceleration, velocity and displacement histories and
 its response spectrum against a target (PNG, matplotlib's Agg backend).
 
-Called by `archdam-motion ... --png FILE`, which writes the two CSV inputs:
+Its data comes from `archdam-motion ... --plot FILE`, which writes the two
+CSV inputs and prints the command that runs this script on them:
   --histories: time [s], acceleration [m/s^2], velocity [m/s], displacement [m]
   --spectrum:  period [s], SD [m], PSV [m/s], PSA [m/s^2][, target PSA [m/s^2]]
 It can also be run by hand on such files:

@@ -9,7 +9,7 @@
 #pragma once
 
 #include <archdam/analysis/simulation.h>
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_shape.h>
 
 #include <sstream>
 #include <string>

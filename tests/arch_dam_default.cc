@@ -26,7 +26,8 @@
 // the geometry's curves) for scripts/plot_arch_dam.py, which draws the
 // pictures of doc/arch-dam-geometry.md.
 
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_mesh.h>
+#include <archdam/geometry/arch_dam_shape.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/physics/solid/materials.h>
 

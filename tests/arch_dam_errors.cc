@@ -7,7 +7,7 @@
 // bad value from prm text, as a case file would give it.
 
 #include <archdam/base/input_error.h>
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_mesh.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>

@@ -25,7 +25,7 @@
 // have a relative error of order 1e-12 (step^2 times the third derivative,
 // plus round-off eps/step ~ 1e-10); 1e-8 covers both with a margin.
 
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_shape.h>
 
 #include <deal.II/base/quadrature_lib.h>
 

@@ -38,7 +38,8 @@
 //  - minimum scaled Jacobian at least 0.2, as for the default mesh
 //    (arch_dam_default).
 
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_mesh.h>
+#include <archdam/geometry/arch_dam_shape.h>
 #include <archdam/geometry/ids.h>
 
 #include <deal.II/base/quadrature_lib.h>

@@ -32,7 +32,8 @@
 // is below 1e-4 (the order-2 prediction from the coarsest mesh's difference,
 // about 3e-3 / 4^3 = 5e-5, with a margin of 2).
 
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_mesh.h>
+#include <archdam/geometry/arch_dam_shape.h>
 #include <archdam/geometry/ids.h>
 
 #include <deal.II/base/quadrature_lib.h>

@@ -34,7 +34,7 @@
 // 4. The coupled dam-water solver against a second method: the Gmsh example
 //    (prm/gmsh_blocks_v4.msh: 3 blocks, rock, 25 m of water; Q1) with
 //    compressible water. The steady-state response to a harmonic ground
-//    acceleration in x (physics/reservoir harmonic_response, a direct
+//    acceleration in x (tests/harmonic_response.h, a direct
 //    complex solve, no eigensolver), with the same undamped water (the
 //    radiation matrix H set to 0) and Rayleigh damping beta = 1e-6 s
 //    (zeta = beta omega / 2 = 1.4e-5 at the mode's 4.47 Hz), must peak at the
@@ -51,13 +51,13 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/physics/reservoir/coupled_system.h>
-#include <archdam/physics/reservoir/harmonic_response.h>
 #include <archdam/physics/solid/solid_operators.h>
 
 #include <deal.II/base/mpi.h>
 
 #include "archdam_tests.h"
 #include "case_text.h"
+#include "harmonic_response.h"
 
 #include <algorithm>
 #include <cmath>
@@ -150,8 +150,9 @@ end
 
     const auto amplitude = [&](const double omega) {
       archdam::Vector re, im;
-      reservoir::harmonic_response(sim.space(), sim.mass(), sim.stiffness(), {0., 1e-6},
-                                   inertia, &undamped, p.reservoir.density, omega, 0, re, im);
+      archdam::testing::harmonic_response(sim.space(), sim.mass(), sim.stiffness(), {0., 1e-6},
+                                          inertia, &undamped, p.reservoir.density, omega, 0, re,
+                                          im);
       return std::sqrt(re.norm_sqr() + im.norm_sqr());
     };
     const double omega = modes.omega[k];

@@ -1,6 +1,6 @@
-// The archdam-motion command (loads/motion_command.h): every user error gives
-// one message and exit code 1; what it writes is checked against independent
-// readings of the same data:
+// The archdam-motion command (application/motion_command.h): every user
+// error gives one message and exit code 1; what it writes is checked against
+// independent readings of the same data:
 //  - AT2 -> CSV: the CSV read back equals the AT2 record read by read_at2 to
 //    the CSV's 10 significant digits (tolerance 1e-9 of the PGA);
 //  - AT2 resampled -> AT2: NPTS and DT of the new header, values equal to the
@@ -11,12 +11,14 @@
 //    same settings (to 1e-7 of the PGA), and its PGA is the target;
 //  - single-column input in cm/s^2, and `case` on a case file, against
 //    values typed here and read_at2;
-//  - the PNG: the file is written and is a PNG (its 8-byte signature); the
-//    plot itself is looked at in doc/ground-motion.md.
+//  - the plot: the command writes its data and prints the command that draws
+//    it, which this test runs as a user would; the file it makes is a PNG
+//    (its 8-byte signature); the plot itself is looked at in
+//    doc/ground-motion.md.
 // The summaries the command prints for users are not part of this output.
 
+#include <archdam/application/motion_command.h>
 #include <archdam/loads/artificial_motion.h>
-#include <archdam/loads/motion_command.h>
 #include <archdam/loads/record_io.h>
 #include <archdam/loads/record_processing.h>
 
@@ -30,6 +32,7 @@
 #include "command_line_tests.h"
 
 using namespace archdam::loads;
+using archdam::run_motion_command;
 using archdam::testing::check_below;
 using archdam::testing::log;
 
@@ -79,7 +82,7 @@ main(int argc, char **argv)
   run("no command", {});
   run("unknown command", {"plot", pacoima});
   run("unknown option", {"inspect", pacoima, "--colour", "red"});
-  run("option without its value", {"inspect", pacoima, "--png"});
+  run("option without its value", {"inspect", pacoima, "--plot"});
   run("value not a number", {"generate", "--pga", "0.3g"});
   run("option given twice", {"generate", "--seed", "1", "--seed", "2"});
   run("option of another command", {"convert", pacoima, "--seed", "3", "--csv", "a.csv"});
@@ -187,11 +190,34 @@ main(int argc, char **argv)
   run("case: component x, which the case does not have",
       {"case", "motion_case.prm", "--component", "x"});
 
-  run("inspect with a PNG", {"inspect", pacoima, "--png", "motion_pacoima.png"}, false);
+  {
+    // Nothing left by an earlier run counts; the output stream, which the
+    // other runs leave out, holds the command.
+    for (const char *name :
+         {"motion_pacoima.png", "motion_pacoima.histories.csv", "motion_pacoima.spectrum.csv"})
+      std::filesystem::remove(name);
+    const char *args[] = {"archdam-motion", "inspect", pacoima.c_str(), "--plot",
+                          "motion_pacoima.png"};
+    std::ostringstream out, err;
+    const int          code    = run_motion_command(5, args, out, err);
+    const std::string  text    = out.str();
+    const auto         command = text.find("/usr/bin/python3 ");
+    log() << "* inspect with a plot: exit code " << code << "\n  data written: "
+          << (std::filesystem::exists("motion_pacoima.histories.csv") &&
+                  std::filesystem::exists("motion_pacoima.spectrum.csv") ?
+                "yes" :
+                "NO")
+          << ", the command that draws it printed: "
+          << (command != std::string::npos ? "yes" : "NO") << std::endl;
+    if (command != std::string::npos)
+      if (const int status =
+            std::system(text.substr(command, text.find('\n', command) - command).c_str()))
+        log() << "  the command returned " << status << std::endl;
+  }
   std::ifstream png("motion_pacoima.png", std::ios::binary);
   char          signature[8] = {};
   png.read(signature, 8);
-  log() << "  PNG written: "
+  log() << "  PNG drawn by that command: "
         << (png && std::string(signature + 1, 3) == "PNG" && signature[0] == char(0x89) ? "yes" :
                                                                                           "NO")
         << std::endl;

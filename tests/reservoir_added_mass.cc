@@ -22,13 +22,13 @@
 //    0.5427 rho_w W H^2 against 7/12 = 0.5833): printed for the record.
 
 #include <archdam/physics/reservoir/fluid_operators.h>
-#include <archdam/physics/reservoir/harmonic_response.h>
 #include <archdam/physics/reservoir/wetted_face_loads.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include "archdam_tests.h"
+#include "harmonic_response.h"
 #include "reservoir_reference.h"
 
 using namespace archdam;
@@ -173,7 +173,7 @@ main(int argc, char **argv)
       reservoir::FluidOperators ops;
       reservoir::assemble_fluid_operators(space, rp, g, pairs, ops);
       Vector pr, pi, ghosted;
-      reservoir::harmonic_pressure(space, ops, 1., 0, pr, pi);
+      harmonic_pressure(space, ops, 1., 0, pr, pi);
       // the force of the water on the dam in x: int p n_x = (1/rho) iota_x^T S^T p
       const double force = (ops.influence[0] * pr) / rho;
       space.reinit_ghosted(ghosted);

@@ -14,7 +14,7 @@
 //    point (z = 200 m, 2 m below the level) the smallest.
 
 #include <archdam/analysis/simulation.h>
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_shape.h>
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/utilities.h>

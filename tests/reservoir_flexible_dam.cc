@@ -9,7 +9,7 @@
 // damping (beta = 0.002 s, 0.6 % of critical at the fundamental).
 //
 // Method. The resonance of the steady-state crest displacement under a
-// harmonic ground acceleration (physics/reservoir harmonic_response: the
+// harmonic ground acceleration (tests/harmonic_response.h: the
 // complex symmetric 2x2-block system of the dam with its water), located by
 // a scan and a golden-section search; with 0.6 % damping it is within 4e-5
 // of the undamped natural frequency.
@@ -30,7 +30,6 @@
 //    mass (reservoir_added_mass), is the lowest.
 
 #include <archdam/physics/reservoir/fluid_operators.h>
-#include <archdam/physics/reservoir/harmonic_response.h>
 #include <archdam/physics/reservoir/wetted_face_loads.h>
 #include <archdam/physics/solid/solid_operators.h>
 
@@ -38,6 +37,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include "archdam_tests.h"
+#include "harmonic_response.h"
 #include "reservoir_reference.h"
 
 using namespace archdam;
@@ -90,8 +90,7 @@ namespace
     const dealii::Point<dim> crest(ch.dam / 2, ch.W / 2, ch.H);
     const auto amplitude = [&](const double omega) {
       Vector re, im, g_re, g_im;
-      reservoir::harmonic_response(space, M, K, rayleigh, inertia, ops.get(), ch.rho, omega, 0,
-                                   re, im);
+      harmonic_response(space, M, K, rayleigh, inertia, ops.get(), ch.rho, omega, 0, re, im);
       space.reinit_ghosted(g_re);
       space.reinit_ghosted(g_im);
       g_re = re;

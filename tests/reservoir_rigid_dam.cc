@@ -9,7 +9,7 @@
 // free surface, Q2 pressure. The dam is a fixed slab (every DOF constrained):
 // the water sees the face accelerate with the ground. The FE response is the
 // steady state of (Q - omega^2 G + i omega H) P = -S iota_x, solved as a real
-// 2x2-block symmetric system (harmonic_response.h).
+// 2x2-block symmetric system (tests/harmonic_response.h).
 //
 // References (all computed here, none from the code under test):
 //  - the truncated channel: the same boundary-value problem (Sommerfeld
@@ -42,12 +42,12 @@
 // refinement must reduce the error at least twofold.
 
 #include <archdam/physics/reservoir/fluid_operators.h>
-#include <archdam/physics/reservoir/harmonic_response.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include "archdam_tests.h"
+#include "harmonic_response.h"
 #include "reservoir_reference.h"
 
 using namespace archdam;
@@ -89,7 +89,7 @@ namespace
   fe_face_pressure(const Model &m, const Channel &ch, const double omega)
   {
     Vector pr, pi, gr, gi;
-    reservoir::harmonic_pressure(*m.space, m.ops, omega, 0, pr, pi);
+    harmonic_pressure(*m.space, m.ops, omega, 0, pr, pi);
     m.space->reinit_ghosted(gr);
     m.space->reinit_ghosted(gi);
     gr = pr;

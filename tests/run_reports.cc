@@ -24,7 +24,7 @@
 //    record relative to the case file's folder (doc/user-guide.md).
 
 #include <archdam/application/command_line.h>
-#include <archdam/loads/motion_command.h>
+#include <archdam/application/motion_command.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -217,7 +217,7 @@ namespace
     write_input("motion_cases/variants/variant.prm", "include ../base.prm\n");
     std::string err;
     const int   code = archdam::testing::run_in_process(
-      archdam::loads::run_motion_command, "archdam-motion",
+      archdam::run_motion_command, "archdam-motion",
       {"case", "motion_cases/variants/variant.prm"}, err);
     log() << "  from the test's folder, exit code " << code << (err.empty() ? "" : ": " + err)
           << std::endl;

@@ -1,5 +1,6 @@
 #include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
+#include <archdam/geometry/arch_dam_mesh.h>
 #include <archdam/geometry/gmsh_mesh.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>

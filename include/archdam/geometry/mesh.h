@@ -1,7 +1,7 @@
 #pragma once
 
 #include <archdam/base/selection.h>
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/geometry/arch_dam_parameters.h>
 #include <archdam/geometry/box_mesh.h>
 
 #include <deal.II/distributed/shared_tria.h>
@@ -14,7 +14,7 @@ namespace archdam::geometry
   enum class MeshSource
   {
     box,      ///< a concrete block on a rock block (box_mesh.h)
-    arch_dam, ///< the parametric arch dam in its canyon (arch_dam.h)
+    arch_dam, ///< the parametric arch dam in its canyon (arch_dam_mesh.h)
     gmsh      ///< a mesh read from Mesh/Gmsh/File (gmsh_mesh.h)
   };
 

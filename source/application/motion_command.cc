@@ -1,3 +1,4 @@
+#include <archdam/application/motion_command.h>
 #include <archdam/base/case_file.h>
 #include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
@@ -5,7 +6,6 @@
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/design_spectrum.h>
 #include <archdam/loads/ground_motion.h>
-#include <archdam/loads/motion_command.h>
 #include <archdam/loads/record_io.h>
 #include <archdam/loads/record_processing.h>
 #include <archdam/loads/response_spectrum.h>
@@ -28,8 +28,10 @@
 #include <string>
 #include <vector>
 
-namespace archdam::loads
+namespace archdam
 {
+  using namespace loads;
+
   namespace
   {
     const char *usage = R"(archdam-motion: generate, convert, scale and inspect ground motions.
@@ -94,7 +96,10 @@ Output options:
   --at2 FILE          PEER .AT2 file, in g
   --histories FILE    CSV: time, acceleration, velocity, displacement (SI)
   --spectrum FILE     CSV: period, SD, PSV, PSA (and the target's PSA)
-  --png FILE          plot: histories, and the spectrum against the target
+  --plot FILE         the plot FILE (PNG: histories, and the spectrum against
+                      the target): writes its data (FILE's name with
+                      .histories.csv and .spectrum.csv) and prints the
+                      command that draws it (/usr/bin/python3 with matplotlib)
   --spectrum-damping Z  damping of the spectrum written and plotted (0.05)
   --title TEXT        title of the plot and of the AT2 header
 
@@ -111,7 +116,7 @@ Errors in the input give one message and exit code 1.
       "--window",   "--taper",        "--resample",    "--highpass",
       "--lowpass",  "--order",        "--baseline-degree",
       "--target-pga", "--csv",        "--at2",         "--histories",
-      "--spectrum", "--png",          "--spectrum-damping", "--title"};
+      "--spectrum", "--plot",         "--spectrum-damping", "--title"};
     const std::set<std::string> flag_options = {"--baseline", "--no-pga-match"};
 
     const std::set<std::string> input_group = {"--format", "--units", "--dt", "--scale"};
@@ -128,7 +133,7 @@ Errors in the input give one message and exit code 1.
       "--vertical-factor", "--no-pga-match"};
     const std::set<std::string> output_group = {"--csv",      "--at2",
                                                 "--histories", "--spectrum",
-                                                "--png",      "--spectrum-damping",
+                                                "--plot",     "--spectrum-damping",
                                                 "--title"};
 
     /// Numbers in this command's reports: 4 significant digits.
@@ -489,6 +494,8 @@ Errors in the input give one message and exit code 1.
         }
     }
 
+    /// @p s as one word of a shell command line, so that a printed command
+    /// can be pasted as it is.
     std::string
     shell_quote(const std::string &s)
     {
@@ -498,32 +505,33 @@ Errors in the input give one message and exit code 1.
       return q + "'";
     }
 
+    /// The plot @p path (a PNG: the histories, and the spectrum against the
+    /// target): its data next to it (the name with .histories.csv and
+    /// .spectrum.csv), and on @p out the command that draws it from them
+    /// (scripts/plot_motion.py, /usr/bin/python3 with matplotlib). The user
+    /// runs it: the program itself starts no other program.
     void
-    write_png(const std::string                   &path,
-              const AccelerationRecord            &r,
-              const std::optional<TargetSpectrum> &target,
-              const double                         damping,
-              const std::string                   &title,
-              const std::string                   &match_range)
+    write_plot_data(std::ostream                        &out,
+                    const std::string                   &path,
+                    const AccelerationRecord            &r,
+                    const std::optional<TargetSpectrum> &target,
+                    const double                         damping,
+                    const std::string                   &title,
+                    const std::string                   &match_range)
     {
-      const std::string histories = path + ".histories.csv";
-      const std::string spectrum  = path + ".spectrum.csv";
+      const std::string histories =
+        std::filesystem::path(path).replace_extension(".histories.csv").string();
+      const std::string spectrum =
+        std::filesystem::path(path).replace_extension(".spectrum.csv").string();
       write_histories(histories, r);
       write_spectrum(spectrum, r, target, damping);
-      const std::string command =
-        "/usr/bin/python3 " + shell_quote(std::string(ARCHDAM_SCRIPTS_DIR) + "/plot_motion.py") +
-        " --histories " + shell_quote(histories) + " --spectrum " + shell_quote(spectrum) +
-        " --output " + shell_quote(path) + " --title " + shell_quote(title) + " --damping " +
-        str(damping) + (match_range.empty() ? "" : " --match-range " + match_range);
-      const int status = std::system(command.c_str());
-      std::error_code ignored;
-      std::filesystem::remove(histories, ignored);
-      std::filesystem::remove(spectrum, ignored);
-      if (status != 0)
-        throw InputError("Plotting '" + path + "' failed (" + command +
-                         " returned " + std::to_string(status) +
-                         "); it needs /usr/bin/python3 with matplotlib "
-                         "(Debian package python3-matplotlib).");
+      out << "wrote " << histories << " and " << spectrum << "; the plot " << path
+          << " is drawn by\n  /usr/bin/python3 "
+          << shell_quote(std::string(ARCHDAM_SCRIPTS_DIR) + "/plot_motion.py") << " --histories "
+          << shell_quote(histories) << " --spectrum " << shell_quote(spectrum) << " --output "
+          << shell_quote(path) << " --title " << shell_quote(title) << " --damping "
+          << str(damping) << (match_range.empty() ? "" : " --match-range " + match_range)
+          << "\n";
     }
 
     void
@@ -557,17 +565,14 @@ Errors in the input give one message and exit code 1.
           write_spectrum(o.text("--spectrum", ""), r, target, damping);
           out << "wrote " << o.text("--spectrum", "") << "\n";
         }
-      if (o.has("--png"))
-        {
-          write_png(o.text("--png", ""), r, target, damping, title, match_range);
-          out << "wrote " << o.text("--png", "") << "\n";
-        }
+      if (o.has("--plot"))
+        write_plot_data(out, o.text("--plot", ""), r, target, damping, title, match_range);
     }
 
     bool
     any_output(const Options &o)
     {
-      for (const std::string name : {"--csv", "--at2", "--histories", "--spectrum", "--png"})
+      for (const std::string name : {"--csv", "--at2", "--histories", "--spectrum", "--plot"})
         if (o.has(name))
           return true;
       return false;
@@ -635,7 +640,7 @@ Errors in the input give one message and exit code 1.
       const ProcessingParameters          processing = processing_from(o);
       if (o.command == "convert" && !any_output(o))
         throw InputError("'convert' writes nothing without an output option "
-                         "(--csv, --at2, --histories, --spectrum, --png).");
+                         "(--csv, --at2, --histories, --spectrum, --plot).");
       AccelerationRecord r = read_input(o, o.positional[0]);
       if (processing.any())
         r = process(r, processing, "");
@@ -654,7 +659,7 @@ Errors in the input give one message and exit code 1.
       expect_positional(o, 1, "the record file INPUT");
       if (!any_output(o))
         throw InputError("'scale' writes nothing without an output option "
-                         "(--csv, --at2, --histories, --spectrum, --png).");
+                         "(--csv, --at2, --histories, --spectrum, --plot).");
       const double pga = o.number("--pga", 0.);
       AccelerationRecord r = read_input(o, o.positional[0]);
       const double factor = pga * standard_gravity / r.peak();
@@ -800,4 +805,4 @@ Errors in the input give one message and exit code 1.
         return 2;
       }
   }
-} // namespace archdam::loads
+} // namespace archdam

@@ -1,25 +1,44 @@
+// Shared by the reservoir and modal tests: the steady-state response to a
+// harmonic ground acceleration, solved directly in the frequency domain, the
+// reference the eigenvalues and the time-domain results are compared with. It
+// is built from the library's operators (solid and reservoir modules;
+// doc/theory/reservoir.md §9).
+#pragma once
+
+#include <archdam/base/types.h>
+#include <archdam/fe/fe_space.h>
 #include <archdam/physics/reservoir/coupled_system.h>
-#include <archdam/physics/reservoir/harmonic_response.h>
+#include <archdam/physics/reservoir/fluid_operators.h>
 #include <archdam/time/factorized_operator.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
-namespace archdam::physics::reservoir
+namespace archdam::testing
 {
-  using namespace dealii;
-
-  void
-  solve_complex_symmetric(const SparseMatrix &A,
-                          const SparseMatrix &B,
-                          const IndexSet     &active,
-                          const Vector       &f_re,
-                          const Vector       &f_im,
-                          Vector             &x_re,
-                          Vector             &x_im)
+  /**
+   * Solve the complex symmetric system (A + iB)(x_re + i x_im) = f_re + i f_im
+   * on the DOFs in @p active (locally owned ones; x = 0 elsewhere) through its
+   * real symmetric indefinite form
+   *   [[A, -B], [-B, -A]] [x_re; x_im] = [f_re; -f_im],
+   * factorized by MUMPS LDL^T (time/factorized_operator.h). A and B share one
+   * sparsity pattern.
+   */
+  inline void
+  solve_complex_symmetric(const SparseMatrix     &A,
+                          const SparseMatrix     &B,
+                          const dealii::IndexSet &active,
+                          const Vector           &f_re,
+                          const Vector           &f_im,
+                          Vector                 &x_re,
+                          Vector                 &x_im)
   {
+    using namespace dealii;
     const MPI_Comm  comm  = A.get_mpi_communicator();
     const IndexSet  owned = A.locally_owned_range_indices();
     const auto      n     = A.m();
@@ -130,39 +149,56 @@ namespace archdam::physics::reservoir
     x_im.compress(VectorOperation::insert);
   }
 
-  void
-  harmonic_pressure(const fe::FESpace    &space,
-                    const FluidOperators &ops,
-                    const double          omega,
-                    const unsigned int    direction,
-                    Vector               &p_re,
-                    Vector               &p_im)
+  /**
+   * Steady-state pressure amplitude of the water alone (rigid, fixed solid)
+   * under the harmonic ground acceleration a_g(t) = Re(e^{i omega t}) e_d:
+   *   (Q - omega^2 G + i omega H) P = -S iota_d   (doc/theory/reservoir.md §9),
+   * on the free pressure DOFs.
+   */
+  inline void
+  harmonic_pressure(const fe::FESpace                        &space,
+                    const physics::reservoir::FluidOperators &ops,
+                    const double                              omega,
+                    const unsigned int                        direction,
+                    Vector                                   &p_re,
+                    Vector                                   &p_im)
   {
+    using physics::reservoir::linear_combination;
     SparseMatrix A, B;
     linear_combination(A, {{1., &ops.Q}, {-omega * omega, &ops.G}});
     linear_combination(B, {{omega, &ops.H}});
     Vector f = ops.influence[direction], zero;
     f *= -1.;
     space.reinit(zero);
-    solve_complex_symmetric(A, B, free_pressure_dofs(space), f, zero, p_re, p_im);
+    solve_complex_symmetric(A, B, physics::reservoir::free_pressure_dofs(space), f, zero, p_re,
+                            p_im);
   }
-} // namespace archdam::physics::reservoir
 
-namespace archdam::physics::reservoir
-{
-  void
-  harmonic_response(const fe::FESpace              &space,
-                    const SparseMatrix             &M,
-                    const SparseMatrix             &K,
-                    const std::pair<double, double> rayleigh,
-                    const Vector                   &inertia_load,
-                    const FluidOperators           *water,
-                    const double                    density,
-                    const double                    omega,
-                    const unsigned int              direction,
-                    Vector                         &x_re,
-                    Vector                         &x_im)
+  /**
+   * Steady-state response (U, P) of the dam (with its water, if @p water is
+   * given) to the harmonic ground acceleration a_g(t) = Re(e^{i omega t}) e_d,
+   * relative formulation (doc/theory/reservoir.md §9, doc/theory/foundation.md §2):
+   *   (K - omega^2 M + i omega D) U - (1/rho_w) S^T P = -M iota_d,
+   *   -omega^2 S U + (Q - omega^2 G + i omega H) P = -S iota_d,
+   * D = alpha M + beta K. The water rows are scaled by 1/(omega^2 rho_w),
+   * which makes the system complex symmetric (the 2x2-block analogue of the
+   * paper's eq. 3.2), and solved by solve_complex_symmetric() on all free
+   * DOFs. Used to find the resonances of the dam-water system from a sweep.
+   */
+  inline void
+  harmonic_response(const fe::FESpace                        &space,
+                    const SparseMatrix                       &M,
+                    const SparseMatrix                       &K,
+                    const std::pair<double, double>           rayleigh,
+                    const Vector                             &inertia_load, ///< M iota_d
+                    const physics::reservoir::FluidOperators *water,
+                    const double                              density,
+                    const double                              omega,
+                    const unsigned int                        direction,
+                    Vector                                   &x_re,
+                    Vector                                   &x_im)
   {
+    using physics::reservoir::linear_combination;
     const auto [alpha, beta] = rayleigh;
     const double w2rho       = omega * omega * density;
     SparseMatrix A, B;
@@ -195,4 +231,4 @@ namespace archdam::physics::reservoir
     space.reinit(zero);
     solve_complex_symmetric(A, B, free, f, zero, x_re, x_im);
   }
-} // namespace archdam::physics::reservoir
+} // namespace archdam::testing

@@ -1,5 +1,5 @@
-// Parametric double-curvature arch dam in its canyon, with foundation rock and
-// reservoir (doc/arch-dam-geometry.md gives every formula and default).
+// The mesh of the parametric arch dam in its canyon, with foundation rock and
+// reservoir (doc/arch-dam-geometry.md; the shape is arch_dam_shape.h).
 //
 // The mesh is a structured grid in index space (i across the valley from
 // y = +Y to y = -Y, k along the stream from the upstream end to the downstream
@@ -21,8 +21,9 @@
 // u = u_k between blocks; every vertex is shared (the splitter duplicates
 // joint and fluid-solid vertices later).
 
-#include <archdam/base/input_error.h>
-#include <archdam/geometry/arch_dam.h>
+#include <archdam/base/number_text.h>
+#include <archdam/geometry/arch_dam_mesh.h>
+#include <archdam/geometry/arch_dam_shape.h>
 #include <archdam/geometry/ids.h>
 
 #include <deal.II/base/tensor.h>
@@ -33,361 +34,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace archdam::geometry
 {
   using namespace dealii;
-
-  void
-  ArchDamParameters::add_parameters(ParameterHandler &prm)
-  {
-    const auto positive = Patterns::Double(0., Patterns::Double::max_double_value);
-    const auto nonneg   = Patterns::Double(0.);
-
-    prm.add_parameter("Height", height,
-                      "Dam height H [m]: the crest's elevation above the dam base "
-                      "(z = 0, the lowest point of the crown cantilever).",
-                      positive);
-    prm.add_parameter("Crest length", crest_length,
-                      "Arc length of the crest arch [m], measured along its "
-                      "mid-thickness line from abutment to abutment.",
-                      positive);
-    prm.add_parameter("Crown thickness at crest", crown_thickness_crest,
-                      "Thickness of the crown cantilever at the crest [m].", positive);
-    prm.add_parameter("Crown thickness at base", crown_thickness_base,
-                      "Thickness of the crown cantilever at the base [m]; it varies "
-                      "linearly with elevation in between.",
-                      positive);
-    prm.add_parameter("Upstream overhang", upstream_overhang,
-                      "How far the crown cantilever's upstream face bulges upstream "
-                      "at mid-height [m], beyond the line from the heel to the crest "
-                      "(its face is a parabola in z).",
-                      Patterns::Double());
-    prm.add_parameter("Crest setback", crest_setback,
-                      "Horizontal distance from the heel to the crest's upstream "
-                      "edge [m], positive downstream.",
-                      Patterns::Double());
-    prm.add_parameter("Arch radius at crest", arch_radius_crest,
-                      "Radius of the crest arch's mid-thickness line [m]; the "
-                      "radius varies linearly with elevation.",
-                      positive);
-    prm.add_parameter("Arch radius at base", arch_radius_base,
-                      "Radius of the base arch's mid-thickness line [m].", positive);
-    prm.add_parameter("Abutment thickening at crest", abutment_thickening_crest,
-                      "Thickness of the crest arch at the abutments divided by its "
-                      "crown thickness [-]; along an arch the thickness grows with "
-                      "the square of the arch angle.",
-                      Patterns::Double(0.5, 5.));
-    prm.add_parameter("Abutment thickening at base", abutment_thickening_base,
-                      "The same ratio for the base arch [-]; it varies linearly "
-                      "with elevation in between.",
-                      Patterns::Double(0.5, 5.));
-    prm.add_parameter("Canyon width at base", canyon_width_base,
-                      "Width of the canyon at the dam base [m], where the arch's "
-                      "mid-thickness line meets the canyon walls. At the crest the "
-                      "width follows from the crest length and radius.",
-                      positive);
-    prm.add_parameter("Canyon shape exponent", canyon_shape_exponent,
-                      "m in the canyon's half-width b(z) = b0 + (bH - b0) (z/H)^m: "
-                      "1 = straight walls, below 1 = U-shaped, above 1 = gorge "
-                      "opening near the top [-].",
-                      Patterns::Double(0.1, 10.));
-    prm.add_parameter("Number of blocks", n_blocks,
-                      "Cantilever blocks between radial contraction joints; block k "
-                      "(material id 10+k) counts from the left bank looking "
-                      "downstream (+y).",
-                      Patterns::Integer(1, 89));
-    prm.add_parameter("Cells across each block", cells_across_block,
-                      "Cells along the arch in each block.", Patterns::Integer(1, 100));
-    prm.add_parameter("Cells through thickness", cells_through,
-                      "Cells through the dam thickness.", Patterns::Integer(1, 100));
-    prm.add_parameter("Cells over height", cells_over_height,
-                      "Cell layers from the dam base to the crest; one layer "
-                      "boundary lies at the water level.",
-                      Patterns::Integer(1, 1000));
-    prm.add_parameter("Foundation depth", foundation_depth,
-                      "Depth of the rock below the dam base, in dam heights [-]; "
-                      "0 = no rock: the dam's base and abutments are then fixed "
-                      "(boundary id 1).",
-                      nonneg);
-    prm.add_parameter("Foundation extent upstream", foundation_upstream,
-                      "Rock extent upstream of the heel of the crown cantilever, in "
-                      "dam heights [-].",
-                      positive);
-    prm.add_parameter("Foundation extent downstream", foundation_downstream,
-                      "Rock extent downstream of the toe of the crown cantilever, in "
-                      "dam heights [-].",
-                      positive);
-    prm.add_parameter("Foundation extent to the sides", foundation_sides,
-                      "Rock extent beyond the canyon's half-width at the crest, on "
-                      "each side, in dam heights [-].",
-                      positive);
-    prm.add_parameter("Rock cell size", rock_cell_size,
-                      "Largest rock cell edge away from the dam [m]; cells grow by "
-                      "at most 1.5 from the dam outwards. 10 Hz with 8 nodes per "
-                      "shear wavelength and quadratic elements needs "
-                      "c_s / (10 Hz) / 4 (45 m for the default rock).",
-                      positive);
-    prm.add_parameter("Water level", water_level,
-                      "Reservoir level above the dam base [m]; 0 = empty reservoir "
-                      "(no water cells).",
-                      nonneg);
-    prm.add_parameter("Reservoir length", reservoir_length,
-                      "Length of the reservoir upstream of the heel, in multiples of "
-                      "the water depth [-].",
-                      positive);
-    prm.add_parameter("Water cell size", water_cell_size,
-                      "Largest water cell edge [m]; 10 Hz with 8 nodes per acoustic "
-                      "wavelength and quadratic elements needs c / (10 Hz) / 4 "
-                      "(36 m for c = 1440 m/s).",
-                      positive);
-  }
-
-  namespace
-  {
-    std::string
-    str(const double v)
-    {
-      std::ostringstream s;
-      s << std::setprecision(6) << v;
-      return s.str();
-    }
-
-    [[noreturn]] void
-    fail(const std::string &what)
-    {
-      throw InputError("Mesh/Arch dam: " + what);
-    }
-  } // namespace
-
-  // ------------------------------------------------------------------------
-  // The geometry
-  // ------------------------------------------------------------------------
-
-  ArchDamGeometry::ArchDamGeometry(const ArchDamParameters &p)
-    : prm(p)
-    , crest_half_width(0.)
-  {
-    const double H = p.height;
-    if (!(H > 0) || !(p.crest_length > 0) || !(p.crown_thickness_crest > 0) ||
-        !(p.crown_thickness_base > 0) || !(p.arch_radius_crest > 0) ||
-        !(p.arch_radius_base > 0) || !(p.canyon_width_base > 0))
-      fail("Height, Crest length, crown thicknesses, arch radii and Canyon width at "
-           "base must be positive.");
-    if (p.n_blocks < 1 || p.cells_across_block < 1 || p.cells_through < 1 ||
-        p.cells_over_height < 1)
-      fail("the numbers of blocks and cells must be at least 1.");
-    const double half_angle = p.crest_length / (2 * p.arch_radius_crest);
-    if (half_angle >= 0.5 * M_PI * 0.95)
-      fail("the crest arch spans " + str(2 * half_angle * 180 / M_PI) +
-           " degrees (Crest length / Arch radius at crest); it must stay below 171.");
-    crest_half_width = p.arch_radius_crest * std::sin(half_angle);
-    if (p.water_level < 0 || p.water_level > H)
-      fail("Water level (" + str(p.water_level) + " m) must lie between 0 and Height (" +
-           str(H) + " m).");
-
-    // The arch at every elevation: the canyon must be narrower than the arch's
-    // diameter (the mid-thickness line meets the wall), and the downstream face
-    // radius must stay positive.
-    for (unsigned int n = 0; n <= 1000; ++n)
-      {
-        const double z = H * n / 1000.;
-        const double b = canyon_half_width(z);
-        const double R = arch_radius(z);
-        if (!(b < 0.99 * R))
-          fail("at elevation " + str(z) + " m the canyon half-width (" + str(b) +
-               " m) is not below the arch radius (" + str(R) +
-               " m): the arch cannot reach the canyon walls. Increase the arch radii "
-               "or narrow the canyon.");
-        if (!(R - 0.5 * arch_thickness(1., z) > 0.05 * R))
-          fail("at elevation " + str(z) + " m the arch (radius " + str(R) +
-               " m) is too thick at the abutments (" + str(arch_thickness(1., z)) +
-               " m): its downstream face would pass the arch centre. Reduce the "
-               "abutment thickening or the crown thickness, or increase the arch radius.");
-      }
-
-    if (has_rock())
-      {
-        // The dam must lie inside the rock block.
-        for (unsigned int n = 0; n <= 100; ++n)
-          for (const double u : {-1., 0., 1.})
-            for (const double s : {0., 1.})
-              {
-                const Point<3>    q = dam_point(u, s, H * n / 100.);
-                const std::string where =
-                  !(q[0] > rock_upstream_x())   ? "upstream" :
-                  !(q[0] < rock_downstream_x()) ? "downstream" :
-                  !(std::abs(q[1]) < rock_side_y()) ? "to the sides" : "";
-                if (!where.empty())
-                  fail("the dam reaches beyond the foundation block at (" + str(q[0]) + ", " +
-                       str(q[1]) + ", " + str(q[2]) + ") m; increase Foundation extent " +
-                       where + ".");
-              }
-      }
-    if (has_water())
-      for (unsigned int n = 0; n <= 100; ++n)
-        if (!(crown_upstream_face(p.water_level * n / 100.) > reservoir_end_x()))
-          fail("the reservoir is shorter than the dam's upstream overhang; increase "
-               "Reservoir length.");
-  }
-
-  double
-  ArchDamGeometry::crown_upstream_face(const double z) const
-  {
-    const double zeta = z / prm.height;
-    return prm.crest_setback * zeta - 4 * prm.upstream_overhang * zeta * (1 - zeta);
-  }
-
-  double
-  ArchDamGeometry::crown_thickness(const double z) const
-  {
-    const double zeta = z / prm.height;
-    return prm.crown_thickness_base +
-           (prm.crown_thickness_crest - prm.crown_thickness_base) * zeta;
-  }
-
-  double
-  ArchDamGeometry::crown_downstream_face(const double z) const
-  {
-    return crown_upstream_face(z) + crown_thickness(z);
-  }
-
-  double
-  ArchDamGeometry::arch_radius(const double z) const
-  {
-    const double zeta = z / prm.height;
-    return prm.arch_radius_base + (prm.arch_radius_crest - prm.arch_radius_base) * zeta;
-  }
-
-  double
-  ArchDamGeometry::arch_center_x(const double z) const
-  {
-    return crown_upstream_face(z) + 0.5 * crown_thickness(z) + arch_radius(z);
-  }
-
-  double
-  ArchDamGeometry::canyon_half_width(const double z) const
-  {
-    const double zeta = std::min(std::max(z / prm.height, 0.), 1.);
-    const double b0   = 0.5 * prm.canyon_width_base;
-    return b0 + (crest_half_width - b0) * std::pow(zeta, prm.canyon_shape_exponent);
-  }
-
-  double
-  ArchDamGeometry::abutment_angle(const double z) const
-  {
-    return std::asin(canyon_half_width(z) / arch_radius(z));
-  }
-
-  double
-  ArchDamGeometry::abutment_thickening(const double z) const
-  {
-    const double zeta = z / prm.height;
-    return prm.abutment_thickening_base +
-           (prm.abutment_thickening_crest - prm.abutment_thickening_base) * zeta;
-  }
-
-  double
-  ArchDamGeometry::arch_thickness(const double u, const double z) const
-  {
-    return crown_thickness(z) * (1 + (abutment_thickening(z) - 1) * u * u);
-  }
-
-  Point<3>
-  ArchDamGeometry::dam_point(const double u, const double s, const double z) const
-  {
-    const double phi = u * abutment_angle(z);
-    const double r   = arch_radius(z) + arch_thickness(u, z) * (0.5 - s);
-    return Point<3>(arch_center_x(z) - r * std::cos(phi), r * std::sin(phi), z);
-  }
-
-  double
-  ArchDamGeometry::arch_angle(const Point<3> &p) const
-  {
-    const double z = std::min(std::max(p[2], 0.), prm.height);
-    return std::atan2(p[1], arch_center_x(z) - p[0]);
-  }
-
-  double
-  ArchDamGeometry::joint_u(const unsigned int k) const
-  {
-    return 1. - 2. * (k + 1) / prm.n_blocks;
-  }
-
-  double
-  ArchDamGeometry::dam_section_area(const double z) const
-  {
-    // Ring area: integral over phi of (r_u^2 - r_d^2)/2 = R T(u) (r_u + r_d = 2R),
-    // with d phi = phi_a du and the mean of 1 + (kappa-1) u^2 over [-1,1].
-    return 2 * arch_radius(z) * crown_thickness(z) * abutment_angle(z) *
-           (1 + (abutment_thickening(z) - 1) / 3.);
-  }
-
-  double
-  ArchDamGeometry::rock_bottom() const
-  {
-    return -prm.foundation_depth * prm.height;
-  }
-
-  double
-  ArchDamGeometry::rock_upstream_x() const
-  {
-    return crown_upstream_face(0.) - prm.foundation_upstream * prm.height;
-  }
-
-  double
-  ArchDamGeometry::rock_downstream_x() const
-  {
-    return crown_downstream_face(0.) + prm.foundation_downstream * prm.height;
-  }
-
-  double
-  ArchDamGeometry::rock_side_y() const
-  {
-    return crest_half_width + prm.foundation_sides * prm.height;
-  }
-
-  double
-  ArchDamGeometry::reservoir_end_x() const
-  {
-    return crown_upstream_face(0.) - prm.reservoir_length * prm.water_level;
-  }
-
-  double
-  ArchDamGeometry::model_upstream_x() const
-  {
-    if (!has_rock())
-      return reservoir_end_x();
-    if (!has_water())
-      return rock_upstream_x();
-    return std::min(rock_upstream_x(), reservoir_end_x());
-  }
-
-  Point<3>
-  ArchDamGeometry::upstream_canyon_wall(const int side, const double x, const double z) const
-  {
-    const Point<3> a  = dam_point(side > 0 ? 1. : -1., 0., z);
-    const double   xe = model_upstream_x();
-    const double   ye = (side > 0 ? 1. : -1.) * canyon_half_width(z);
-    return Point<3>(x, a[1] + (ye - a[1]) * (x - a[0]) / (xe - a[0]), z);
-  }
-
-  Point<3>
-  ArchDamGeometry::downstream_canyon_wall(const int side, const double x, const double z) const
-  {
-    const Point<3> a  = dam_point(side > 0 ? 1. : -1., 1., z);
-    const double   xe = rock_downstream_x();
-    const double   ye = (side > 0 ? 1. : -1.) * canyon_half_width(z);
-    return Point<3>(x, a[1] + (ye - a[1]) * (x - a[0]) / (xe - a[0]), z);
-  }
-
-  // ------------------------------------------------------------------------
-  // The mesh
-  // ------------------------------------------------------------------------
 
   namespace
   {
@@ -579,9 +231,9 @@ namespace archdam::geometry
           n_air = std::max(1u, static_cast<unsigned int>(
                                  std::ceil(nz * (H - p.water_level) / H - 1e-9)));
           if (n_air >= nz)
-            fail("Cells over height (" + std::to_string(nz) +
-                 ") is too small to put a layer boundary at the water level; use at "
-                 "least 2.");
+            arch_dam_input_error("Cells over height (" + std::to_string(nz) +
+                                 ") is too small to put a layer boundary at the water "
+                                 "level; use at least 2.");
           n_wet = nz - n_air;
         }
       const double h_bottom_layer = n_wet > 0 ? p.water_level / n_wet : H / nz;
@@ -783,10 +435,10 @@ namespace archdam::geometry
                 if (!(scalar_product(e[0], cross_product_3d(e[1], e[2])) > 0))
                   {
                     const Point<3> c = vertices[cell.vertices[0]];
-                    fail("the parameters give an inverted or degenerate cell near (" +
-                         str(c[0]) + ", " + str(c[1]) + ", " + str(c[2]) +
-                         ") m; check the arch radii, thicknesses, overhang and canyon "
-                         "width.");
+                    arch_dam_input_error(
+                      "the parameters give an inverted or degenerate cell near (" +
+                      number_text(c[0]) + ", " + number_text(c[1]) + ", " + number_text(c[2]) +
+                      ") m; check the arch radii, thicknesses, overhang and canyon width.");
                   }
               }
             cells.push_back(cell);

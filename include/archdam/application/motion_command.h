@@ -2,7 +2,7 @@
 
 #include <iosfwd>
 
-namespace archdam::loads
+namespace archdam
 {
   /**
    * The `archdam-motion` command, which generates, converts, scales and
@@ -20,8 +20,10 @@ namespace archdam::loads
    * motion (samples, PGA, PGV, PGD, end velocity and displacement, Arias
    * intensity, significant duration, spectral values) and writes what the
    * output options ask for: --csv (two columns, readable as input), --at2,
-   * --histories (acceleration, velocity, displacement), --spectrum and --png
-   * (histories and spectrum against the target, by scripts/plot_motion.py).
+   * --histories (acceleration, velocity, displacement), --spectrum, and
+   * --plot: the data of the plot (histories and spectrum against the target)
+   * with the command that draws it from them (scripts/plot_motion.py), for
+   * the user to run.
    *
    * User errors (InputError, deal.II exceptions while reading a case file)
    * are reported on @p err as one message and give exit code 1; anything
@@ -32,4 +34,4 @@ namespace archdam::loads
                      const char *const *argv,
                      std::ostream      &out,
                      std::ostream      &err);
-} // namespace archdam::loads
+} // namespace archdam
