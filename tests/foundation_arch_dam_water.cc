@@ -72,7 +72,7 @@ end
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.run();
     Response r{testing::crown_response(sim)};
-    for (const auto &row : sim.recorder<archdam::output::PressureRecorder>()->histories())
+    for (const auto &row : sim.recorder<archdam::output::PressureRecorder>()->rows())
       r.peak_heel_pressure = std::max(r.peak_heel_pressure, std::abs(row[1]));
     const auto opening = testing::column(sim.recorder<archdam::output::JointOutput>()->columns(), "crown.opening [m]");
     for (const auto &row : sim.recorder<archdam::output::JointOutput>()->rows())

@@ -35,8 +35,8 @@
 //     shut under its weight W, a slow horizontal ramp starts the slip at
 //     H = c (1 - kappa / delta_s) A + mu W (tolerance 2 %: one ramp step
 //     and the block's vibration). With Law = Mohr-Coulomb the same history
-//     leaves the residual strength 0: opening at F = 0 (the first ramp
-//     step) and slip at H = mu W.
+//     leaves the residual strength 0: opening at once (within the first
+//     ramp steps, F <= 0.02 sigma_t A) and slip at H = mu W.
 
 #include <archdam/time/newmark.h>
 
@@ -253,10 +253,11 @@ main(int argc, char **argv)
       const double W = 2400. * 9.81, F2 = 1.2 * sigma_t * A;
       log << "7. " << (softening ? "softening shear key" : "Mohr-Coulomb")
           << ", after an opening kappa:" << std::endl;
-      // opened for 10 ms, then pushed shut until the block has settled (the
-      // mass-proportional damping of these runs, 20 1/s, stops its bouncing)
+      // opened for 20 ms, then pushed shut until the block has settled (the
+      // mass-proportional damping of these runs, 200 1/s, makes its flight
+      // slow, about 0.025 m/s, and stops its bouncing)
       const auto open_and_shut = [&](Run &r, const double push) {
-        for (unsigned int k = 1; k <= 10; ++k)
+        for (unsigned int k = 1; k <= 20; ++k)
           {
             r.step(F2);
             r.track_openings();
@@ -275,7 +276,7 @@ main(int argc, char **argv)
         return sum / A; // the intact fraction of the joint's area
       };
       {
-        Run r(jp, dt, 20.);
+        Run r(jp, dt, 200.);
         open_and_shut(r, -F2);
         double kappa_min = 1e300, kappa_max = 0.;
         for (const double k : r.kappa)
@@ -299,13 +300,14 @@ main(int argc, char **argv)
           testing::check_relative("  load when the joint opens again [N]", F_open, expected,
                                   0.02);
         else
-          log << "  opens at the first ramp step (residual tensile strength 0): "
-              << (F_open == step_load ? "yes" : "NO") << std::endl;
+          log << "  opens at once (residual tensile strength 0), F = " << F_open << " N: "
+              << (F_open <= 0.02 * sigma_t * A ? "yes" : "NO") << " (at most 0.02 sigma_t A)"
+              << std::endl;
         log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO")
             << std::endl;
       }
       {
-        Run r(jp, dt, 20.);
+        Run r(jp, dt, 200.);
         open_and_shut(r, -W);
         const double step_load = 0.002 * W;
         double       H_slip    = -1.;

@@ -52,7 +52,7 @@ main(int argc, char **argv)
   sim.run();
   bool ok = true;
 
-  const auto &rows = sim.recorder<archdam::output::PressureRecorder>()->histories();
+  const auto &rows = sim.recorder<archdam::output::PressureRecorder>()->rows();
   ok &= testing::check_below("static stage: largest |p| at t = 0 [Pa]",
                              std::abs(*std::max_element(rows[0].begin() + 1, rows[0].end(),
                                                         [](double a, double b) {

@@ -11,6 +11,7 @@
 // independently of the splitter.
 
 #include <archdam/base/input_error.h>
+#include <archdam/geometry/arch_dam_mesh.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>
 #include <archdam/geometry/splitter.h>

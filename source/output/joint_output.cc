@@ -16,10 +16,63 @@ namespace archdam::output
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// `Contraction joints/Monitor points`: the name of each and the node
+    /// pair nearest to it.
+    std::vector<std::pair<std::string, unsigned int>>
+    monitored_pairs(const std::string &text, const joints::NodePairs &pairs)
+    {
+      std::vector<std::pair<std::string, unsigned int>> result;
+      for (const auto &entry : Utilities::split_string_list(text, ';'))
+        {
+          const auto colon = entry.find(':');
+          const auto xyz   = colon == std::string::npos ?
+                               std::vector<std::string>() :
+                               Utilities::split_string_list(entry.substr(colon + 1), ',');
+          if (xyz.size() != dim)
+            throw InputError("Contraction joints/Monitor points: '" + entry +
+                             "' is not 'name: x, y, z'.");
+          Point<dim> x;
+          try
+            {
+              for (unsigned int d = 0; d < dim; ++d)
+                x[d] = Utilities::string_to_double(xyz[d]);
+            }
+          catch (...)
+            {
+              throw InputError("Contraction joints/Monitor points: '" + entry +
+                               "' has a coordinate that is not a number.");
+            }
+          if (pairs.size() == 0)
+            throw InputError("Contraction joints/Monitor points: the model has no joint "
+                             "node pairs to monitor.");
+          result.emplace_back(Utilities::trim(entry.substr(0, colon)), pairs.nearest(x));
+        }
+      return result;
+    }
+
+    /// Time, then opening and slip of each monitored pair.
+    std::vector<std::string>
+    history_columns(const std::vector<std::pair<std::string, unsigned int>> &monitored)
+    {
+      std::vector<std::string> names{"time [s]"};
+      for (const auto &[name, pair] : monitored)
+        {
+          names.push_back(name + ".opening [m]");
+          names.push_back(name + ".slip [m]");
+        }
+      return names;
+    }
+  } // namespace
+
   JointOutput::JointOutput(const joints::JointParameters &p, const joints::NodePairs &pairs,
                            const std::string &directory, const std::string &stage,
                            const unsigned int field_interval)
-    : pairs(pairs)
+    : HistoryRecorder(directory + "/joint_histories_" + stage + ".csv",
+                      history_columns(monitored_pairs(p.monitor_points, pairs)),
+                      pairs.communicator())
+    , pairs(pairs)
     , directory(directory)
     , stage(stage)
     , writer(Utilities::MPI::this_mpi_process(pairs.communicator()) == 0)
@@ -27,37 +80,8 @@ namespace archdam::output
     , peak_opening(pairs.size(), 0.)
     , peak_time(pairs.size(), 0.)
   {
-    std::vector<std::string> names{"time [s]"};
-    for (const auto &entry : Utilities::split_string_list(p.monitor_points, ';'))
-      {
-        const auto colon = entry.find(':');
-        const auto xyz   = colon == std::string::npos ?
-                             std::vector<std::string>() :
-                             Utilities::split_string_list(entry.substr(colon + 1), ',');
-        if (xyz.size() != dim)
-          throw InputError("Contraction joints/Monitor points: '" + entry +
-                           "' is not 'name: x, y, z'.");
-        Point<dim> x;
-        try
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              x[d] = Utilities::string_to_double(xyz[d]);
-          }
-        catch (...)
-          {
-            throw InputError("Contraction joints/Monitor points: '" + entry +
-                             "' has a coordinate that is not a number.");
-          }
-        if (pairs.size() == 0)
-          throw InputError("Contraction joints/Monitor points: the model has no joint "
-                           "node pairs to monitor.");
-        const auto name = Utilities::trim(entry.substr(0, colon));
-        monitored.push_back(pairs.nearest(x));
-        names.push_back(name + ".opening [m]");
-        names.push_back(name + ".slip [m]");
-      }
-    histories = std::make_unique<output::HistoryWriter>(
-      directory + "/joint_histories_" + stage + ".csv", std::move(names), pairs.communicator());
+    for (const auto &[name, pair] : monitored_pairs(p.monitor_points, pairs))
+      monitored.push_back(pair);
   }
 
   void
@@ -85,7 +109,7 @@ namespace archdam::output
         row.push_back(std::max(0., joints.gap(i)));
         row.push_back(joints.slip(i));
       }
-    histories->append(row);
+    table.append(row);
     for (unsigned int i = 0; i < pairs.size(); ++i)
       if (joints.gap(i) > peak_opening[i])
         {
@@ -97,14 +121,14 @@ namespace archdam::output
   void
   JointOutput::save(std::ostream &out) const
   {
-    histories->save(out);
+    HistoryRecorder::save(out);
     binary::write_all(out, peak_opening, peak_time, pvd_records);
   }
 
   void
   JointOutput::load(std::istream &in)
   {
-    histories->load(in);
+    HistoryRecorder::load(in);
     binary::read_all(in, peak_opening, peak_time, pvd_records);
     if (peak_opening.size() != pairs.size())
       throw InputError("Checkpoint: the saved joint state has " +

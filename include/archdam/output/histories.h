@@ -71,6 +71,17 @@ namespace archdam::output
   class HistoryRecorder : public Recorder
   {
   public:
+    const std::vector<std::string> &
+    columns() const
+    {
+      return table.columns();
+    }
+    const std::vector<std::vector<double>> &
+    rows() const
+    {
+      return table.rows();
+    }
+
     void
     save(std::ostream &out) const override
     {

@@ -24,7 +24,7 @@ namespace archdam::output
    *    opening at its crest (its highest pairs), where and when;
    *  - in the summary, the peak opening of each joint with time and place.
    */
-  class JointOutput : public Recorder
+  class JointOutput : public HistoryRecorder
   {
   public:
     /// The pair fields are written at the stage's start and every
@@ -48,29 +48,12 @@ namespace archdam::output
     void
     finish(Summary &summary, const dealii::ConditionalOStream &screen) override;
 
-    const std::vector<std::string> &
-    columns() const
-    {
-      return histories->columns();
-    }
-    const std::vector<std::vector<double>> &
-    rows() const
-    {
-      return histories->rows();
-    }
-
     /// The rows, peaks and field records so far, for a checkpoint
-    /// (output/checkpoint.h); resumed() writes the joint histories file anew
-    /// with its rows.
+    /// (output/checkpoint.h).
     void
     save(std::ostream &out) const override;
     void
     load(std::istream &in) override;
-    void
-    resumed() override
-    {
-      histories->rewrite();
-    }
 
   private:
     /// One row of histories and the running envelopes at @p time.
@@ -85,8 +68,6 @@ namespace archdam::output
     const bool                       writer;
     const unsigned int               field_interval;
     std::vector<unsigned int>        monitored;
-    /// Opening and slip of the monitored pairs.
-    std::unique_ptr<output::HistoryWriter> histories;
     std::vector<double>              peak_opening, peak_time;
     std::vector<std::pair<double, std::string>> pvd_records;
   };

@@ -25,17 +25,6 @@ namespace archdam::output
     void
     finish(Summary &summary, const dealii::ConditionalOStream &screen) override;
 
-    const std::vector<std::string> &
-    columns() const
-    {
-      return table.columns();
-    }
-    const std::vector<std::vector<double>> &
-    rows() const
-    {
-      return table.rows();
-    }
-
   private:
     const Monitors &monitors;
     std::string     directory;

@@ -45,12 +45,6 @@ namespace archdam::output
     void
     finish(Summary &summary, const dealii::ConditionalOStream &screen) override;
 
-    const std::vector<std::vector<double>> &
-    histories() const
-    {
-      return table.rows();
-    }
-
   private:
     struct Weights
     {
