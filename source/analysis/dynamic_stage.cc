@@ -315,7 +315,7 @@ namespace archdam::analysis
     if (joint_solver)
       {
         summary.set("dynamic/contact iterations per step/average",
-                    contact_iterations / std::max(current.step, 1u));
+                    static_cast<double>(contact_iterations) / std::max(current.step, 1u));
         summary.set("dynamic/contact iterations per step/maximum", max_contact_iterations);
         if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
           summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
