@@ -183,9 +183,9 @@ namespace
       namespace solid = physics::solid;
       dealii::Tensor<1, dim> g;
       g[dim - 1] = -p.static_loads.g;
-      solid::assemble_inertia_load(sim.space(), p.materials, solid::InertiaOf::dam, g, gravity);
+      solid::assemble_inertia_load(sim.model().space(), p.materials, solid::InertiaOf::dam, g, gravity);
       for (unsigned int d = 0; d < dim; ++d)
-        solid::assemble_inertia_load(sim.space(), p.materials, solid::InertiaOf::dam,
+        solid::assemble_inertia_load(sim.model().space(), p.materials, solid::InertiaOf::dam,
                                      dealii::Point<dim>::unit_vector(d), influence[d]);
     }
   };
@@ -194,8 +194,8 @@ namespace
   run_case(const Model &model, const double beta1, const double dt, const double end)
   {
     const Parameters         &p     = model.p;
-    const fe::FESpace        &space = model.sim.space();
-    const joints::NodePairs  &pairs = *model.sim.joint_pairs();
+    const fe::FESpace        &space = model.sim.model().space();
+    const joints::NodePairs  &pairs = *model.sim.model().joint_pairs();
     Case                      c;
     c.beta1 = beta1;
     // The strongest damping of the highest frequencies for this Beta1
@@ -215,7 +215,7 @@ namespace
     const auto rayleigh        = p.damping.rayleigh_coefficients();
     // Kbar factorized condensed on the pairs' DOFs, as the dynamic stage does
     // with the default Mixed method solves.
-    time::NewmarkIntegrator newmark(np, model.sim.mass(), model.sim.stiffness(), rayleigh,
+    time::NewmarkIntegrator newmark(np, model.sim.model().mass(), model.sim.model().stiffness(), rayleigh,
                                     space.constraints, nullptr, pairs.interface());
     auto solver = joints::make_joint_solver(p.joints, pairs, newmark.displacement_factor(),
                                             newmark.effective(), newmark.effective_factor());
@@ -229,8 +229,8 @@ namespace
 
     analysis::EnergyBalance::Model em;
     em.space     = &space;
-    em.mass      = &model.sim.mass();
-    em.stiffness = &model.sim.stiffness();
+    em.mass      = &model.sim.model().mass();
+    em.stiffness = &model.sim.model().stiffness();
     em.rayleigh  = rayleigh;
     em.newmark   = np;
     em.influence = &model.influence;
@@ -381,7 +381,7 @@ main(int argc, char **argv)
   analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
   sim.run(); // the static stage
   const Model model(p, sim);
-  const auto &pairs = *sim.joint_pairs();
+  const auto &pairs = *sim.model().joint_pairs();
   // The mass at the pairs' nodes (the row sums of M there, M iota_x): what a
   // redistribution of the mass away from the contact nodes would move.
   std::set<dealii::types::global_dof_index> pair_dofs;
@@ -394,7 +394,7 @@ main(int argc, char **argv)
     at_pairs += model.influence[0](d);
   at_pairs = dealii::Utilities::MPI::sum(at_pairs, MPI_COMM_WORLD);
   auto &out = bench::screen();
-  out << "arch dam, 14 blocks, Q1, 4 cells over the height: " << sim.space().dof_handler.n_dofs()
+  out << "arch dam, 14 blocks, Q1, 4 cells over the height: " << sim.model().space().dof_handler.n_dofs()
       << " DOFs, " << pairs.size() << " node pairs on " << pairs.n_joints()
       << " joints; gravity (static stage), then El Centro (180) x " << scale << " in x for "
       << end << " s; 5 % Rayleigh damping; mu = 0.7, c = 0, sigma_t = 0.5 MPa; "

@@ -131,9 +131,9 @@ main(int argc, char **argv)
         std::ostringstream   screen;
         analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
         sim.run();
-        dofs = sim.space().dof_handler.n_dofs();
-        if (sim.joint_pairs())
-          pairs = sim.joint_pairs()->size();
+        dofs = sim.model().space().dof_handler.n_dofs();
+        if (sim.model().joint_pairs())
+          pairs = sim.model().joint_pairs()->size();
         if (root)
           {
             boost::property_tree::ptree s;

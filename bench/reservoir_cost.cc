@@ -80,7 +80,7 @@ main(int argc, char **argv)
         std::ostringstream   screen;
         analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
         sim.run();
-        dofs[model] = sim.space().dof_handler.n_dofs();
+        dofs[model] = sim.model().space().dof_handler.n_dofs();
         if (root)
           {
             boost::property_tree::ptree summary;

@@ -47,17 +47,17 @@ namespace
       parameters_from_string(case_text::tall_box_on_fixed_base + case_text::no_gravity);
     analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
     sim.setup_model();
-    const auto &M = sim.mass();
-    const auto &K = sim.stiffness();
-    const auto &constraints = sim.space().constraints;
+    const auto &M = sim.model().mass();
+    const auto &K = sim.model().stiffness();
+    const auto &constraints = sim.model().space().constraints;
 
     // u0 = K^-1 f (lateral body force), a0 = -M^-1 K u0.
     archdam::Vector f, u0, a0, tmp;
-    physics::solid::assemble_inertia_load(sim.space(), p.materials,
+    physics::solid::assemble_inertia_load(sim.model().space(), p.materials,
                                           physics::solid::InertiaOf::dam,
                                           Point<dim>::unit_vector(0), f);
     for (archdam::Vector *v : {&u0, &a0, &tmp})
-      sim.space().reinit(*v);
+      sim.model().space().reinit(*v);
     time::FactorizedOperator stiffness_solver, mass_solver;
     stiffness_solver.factorize(K, true);
     stiffness_solver.solve(u0, f);
@@ -82,7 +82,7 @@ namespace
         time::NewmarkIntegrator newmark(tp, M, K, {0., 0.}, constraints);
 
         analysis::EnergyBalance::Model model;
-        model.space     = &sim.space();
+        model.space     = &sim.model().space();
         model.mass      = &M;
         model.stiffness = &K;
         model.newmark   = tp;
@@ -93,7 +93,7 @@ namespace
         time::NewmarkState s;
         archdam::Vector    zero;
         for (archdam::Vector *v : {&s.u, &s.v, &s.a, &zero})
-          sim.space().reinit(*v);
+          sim.model().space().reinit(*v);
         balance.start(s, nullptr);
         s.u = u0;
         s.a = a0;

@@ -91,7 +91,7 @@ main(int argc, char **argv)
   monolith.run();
 
   // Pairing and ids.
-  const auto &tria  = blocks.space().dof_handler.get_triangulation();
+  const auto &tria  = blocks.model().space().dof_handler.get_triangulation();
   const auto  pairs = joints::pair_joint_faces(tria);
   std::set<unsigned int> joints_seen;
   double                 max_distance = 0., max_normal_sum = 0.;
@@ -145,8 +145,8 @@ main(int argc, char **argv)
   log << "; all documented: " << (all_documented ? "yes" : "NO") << std::endl;
 
   // Second method: the monolithic dam.
-  log << "DOFs: " << blocks.space().dof_handler.n_dofs() << " with joints, "
-      << monolith.space().dof_handler.n_dofs() << " monolithic" << std::endl;
+  log << "DOFs: " << blocks.model().space().dof_handler.n_dofs() << " with joints, "
+      << monolith.model().space().dof_handler.n_dofs() << " monolithic" << std::endl;
   const auto &a = blocks.recorder<archdam::output::MonitorHistories>()->rows(), &b = monolith.recorder<archdam::output::MonitorHistories>()->rows();
   const auto &names = monolith.recorder<archdam::output::MonitorHistories>()->columns();
   log << "history rows: " << a.size() << " and " << b.size() << std::endl;

@@ -138,8 +138,8 @@ namespace
     sim.run();
 
     // Monitors, by column name.
-    const auto                   &names = sim.monitors().column_names();
-    const std::vector<double>     row   = sim.monitors().evaluate(sim.state());
+    const auto                   &names = sim.model().monitors().column_names();
+    const std::vector<double>     row   = sim.model().monitors().evaluate(sim.state());
     const auto column = [&](const std::string &name) {
       for (unsigned int c = 0; c < names.size(); ++c)
         if (names[c] == name)
@@ -214,7 +214,7 @@ namespace
 
     // Base reaction (variational) and base traction, computed here from the
     // static displacement with Hooke's law written out (lambda, mu of E, nu).
-    const fe::FESpace &space = sim.space();
+    const fe::FESpace &space = sim.model().space();
     archdam::Vector             u;
     space.reinit_ghosted(u);
     u = sim.static_displacement();

@@ -128,7 +128,7 @@ end
 
     // M iota_x, and the mode that the x motion excites most.
     archdam::Vector inertia;
-    archdam::physics::solid::assemble_inertia_load(sim.space(), p.materials,
+    archdam::physics::solid::assemble_inertia_load(sim.model().space(), p.materials,
                                                    archdam::physics::solid::InertiaOf::dam,
                                                    dealii::Point<archdam::dim>::unit_vector(0),
                                                    inertia);
@@ -139,7 +139,7 @@ end
         k = i;
 
     // The water's operators without the radiation term (copies; H = 0).
-    const auto            *water = sim.fluid();
+    const auto            *water = sim.model().fluid();
     reservoir::FluidOperators undamped;
     reservoir::linear_combination(undamped.G, {{1., &water->G}});
     reservoir::linear_combination(undamped.Q, {{1., &water->Q}});
@@ -150,7 +150,7 @@ end
 
     const auto amplitude = [&](const double omega) {
       archdam::Vector re, im;
-      archdam::testing::harmonic_response(sim.space(), sim.mass(), sim.stiffness(), {0., 1e-6},
+      archdam::testing::harmonic_response(sim.model().space(), sim.model().mass(), sim.model().stiffness(), {0., 1e-6},
                                           inertia, &undamped, p.reservoir.density, omega, 0, re,
                                           im);
       return std::sqrt(re.norm_sqr() + im.norm_sqr());

@@ -83,7 +83,7 @@ namespace
     archdam::analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
     sim.run();
 
-    const auto &space = sim.space();
+    const auto &space = sim.model().space();
     const auto &modes = sim.natural_modes();
     // The rigid-body translation iota_d, built here from the DOF numbering.
     std::array<archdam::Vector, 3> iota, m_iota;
@@ -105,7 +105,7 @@ namespace
     for (unsigned int d = 0; d < 3; ++d)
       {
         iota[d].compress(dealii::VectorOperation::insert);
-        sim.mass().vmult(m_iota[d], iota[d]);
+        sim.model().mass().vmult(m_iota[d], iota[d]);
       }
 
     Result           r;
@@ -122,7 +122,7 @@ namespace
             ratio[d]           = gamma * gamma / total_mass;
           }
         r.mass_ratio.push_back(ratio);
-        sim.mass().vmult(m_phi, modes.shapes[i]);
+        sim.model().mass().vmult(m_phi, modes.shapes[i]);
         for (unsigned int j = 0; j < modes.shapes.size(); ++j)
           r.orthonormality_error = std::max(r.orthonormality_error,
                                             std::abs(modes.shapes[j] * m_phi - (i == j)));

@@ -61,8 +61,8 @@ end
   compute_modes(const analysis::Simulation &sim)
   {
     Modes m;
-    for (unsigned int i = 0; i < sim.space().dof_handler.n_dofs(); ++i)
-      if (!sim.space().constraints.is_constrained(i))
+    for (unsigned int i = 0; i < sim.model().space().dof_handler.n_dofs(); ++i)
+      if (!sim.model().space().constraints.is_constrained(i))
         m.free.push_back(i);
     const unsigned int       n = m.free.size();
     LAPACKFullMatrix<double> K(n, n);
@@ -70,8 +70,8 @@ end
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = 0; j < n; ++j)
         {
-          K(i, j)   = sim.stiffness().el(m.free[i], m.free[j]);
-          m.M(i, j) = sim.mass().el(m.free[i], m.free[j]);
+          K(i, j)   = sim.model().stiffness().el(m.free[i], m.free[j]);
+          m.M(i, j) = sim.model().mass().el(m.free[i], m.free[j]);
         }
     LAPACKFullMatrix<double> B = m.M;
     m.phi.resize(n, dealii::Vector<double>(n));
@@ -96,12 +96,12 @@ end
     tp.time_step = t_end / n;
     tp.beta1     = beta1;
     tp.beta2     = 0.25 * (beta1 + 0.5) * (beta1 + 0.5);
-    time::NewmarkIntegrator newmark(tp, sim.mass(), sim.stiffness(), rayleigh,
-                                    sim.space().constraints);
+    time::NewmarkIntegrator newmark(tp, sim.model().mass(), sim.model().stiffness(), rayleigh,
+                                    sim.model().space().constraints);
     time::NewmarkState s;
     archdam::Vector    zero;
     for (archdam::Vector *v : {&s.u, &s.v, &s.a, &zero})
-      sim.space().reinit(*v);
+      sim.model().space().reinit(*v);
     for (unsigned int i = 0; i < m.free.size(); ++i)
       {
         s.u(m.free[i]) = u0(i);

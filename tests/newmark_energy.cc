@@ -30,27 +30,27 @@ main(int argc, char **argv)
     testing::case_text::tall_box_on_fixed_base + testing::case_text::no_gravity);
   analysis::Simulation             sim(p, MPI_COMM_WORLD, quiet);
   sim.setup_model();
-  const auto &M = sim.mass();
-  const auto &K = sim.stiffness();
+  const auto &M = sim.model().mass();
+  const auto &K = sim.model().stiffness();
 
   // Initial state: the static deflection under a lateral (x) body force,
   // released at t = 0 with a consistent acceleration a0 = -M^-1 K u0.
   archdam::Vector f, u0, a0, tmp;
-  physics::solid::assemble_inertia_load(sim.space(), p.materials, physics::solid::InertiaOf::dam,
+  physics::solid::assemble_inertia_load(sim.model().space(), p.materials, physics::solid::InertiaOf::dam,
                                         Point<dim>::unit_vector(0), f);
   for (archdam::Vector *v : {&u0, &a0, &tmp})
-    sim.space().reinit(*v);
+    sim.model().space().reinit(*v);
   time::FactorizedOperator solver;
   solver.factorize(K, true);
   solver.solve(u0, f);
-  sim.space().constraints.distribute(u0); // the glued joint's side 2 follows side 1
+  sim.model().space().constraints.distribute(u0); // the glued joint's side 2 follows side 1
   K.vmult(tmp, u0);
   tmp *= -1.;
-  sim.space().constraints.set_zero(tmp);
+  sim.model().space().constraints.set_zero(tmp);
   time::FactorizedOperator mass_solver;
   mass_solver.factorize(M, true);
   mass_solver.solve(a0, tmp);
-  sim.space().constraints.distribute(a0);
+  sim.model().space().constraints.distribute(a0);
 
   const double T1_estimate = 0.05; // s, the order of the first period here
   const double dt          = T1_estimate / 40;
@@ -69,16 +69,16 @@ main(int argc, char **argv)
       tp.time_step = dt;
       tp.beta1     = c.beta1;
       tp.beta2     = 0.25 * (c.beta1 + 0.5) * (c.beta1 + 0.5);
-      time::NewmarkIntegrator newmark(tp, M, K, {c.alpha, c.beta}, sim.space().constraints);
+      time::NewmarkIntegrator newmark(tp, M, K, {c.alpha, c.beta}, sim.model().space().constraints);
 
       time::NewmarkState s;
       archdam::Vector    zero, vbar;
       for (archdam::Vector *v : {&s.v, &zero, &vbar})
-        sim.space().reinit(*v);
+        sim.model().space().reinit(*v);
       s.u = u0;
       s.a = a0;
 
-      const double E0       = testing::elastic_energy(M, K, sim.space().constraints, s);
+      const double E0       = testing::elastic_energy(M, K, sim.model().space().constraints, s);
       double       E        = E0;
       double       worst    = 0.; // largest violation of the identity, relative to E0
       bool         monotone = true;
@@ -88,14 +88,14 @@ main(int argc, char **argv)
           newmark.advance(zero, s);
           vbar += s.v;
           vbar *= 0.5;
-          sim.space().constraints.set_zero(vbar); // as in elastic_energy()
+          sim.model().space().constraints.set_zero(vbar); // as in elastic_energy()
           // dissipation dt vbar^T (alpha M + beta K) vbar
           M.vmult(tmp, vbar);
           double dissipated = c.alpha * (tmp * vbar);
           K.vmult(tmp, vbar);
           dissipated = dt * (dissipated + c.beta * (tmp * vbar));
 
-          const double E_next = testing::elastic_energy(M, K, sim.space().constraints, s);
+          const double E_next = testing::elastic_energy(M, K, sim.model().space().constraints, s);
           monotone            = monotone && E_next < E;
           if (c.beta1 == 0.5)
             worst = std::max(worst, std::abs(E_next - E + dissipated) / E0);

@@ -162,12 +162,12 @@ namespace
     sim.run();
 
     const unsigned int n_cells = nx * ny * nz;
-    const unsigned int cells   = sim.space().dof_handler.get_triangulation().n_active_cells();
+    const unsigned int cells   = sim.model().space().dof_handler.get_triangulation().n_active_cells();
     log() << "the run's mesh has " << nx << " x " << ny << " x " << nz << " cells: "
           << (cells == n_cells ? "yes" : "NO") << std::endl;
     const unsigned int pairs = (degree * nx + 1) * (degree * nz + 1) - (degree * nx + 1);
     log() << "the run reports " << pairs << " node pairs: "
-          << (sim.joint_pairs() && sim.joint_pairs()->size() == pairs ? "yes" : "NO")
+          << (sim.model().joint_pairs() && sim.model().joint_pairs()->size() == pairs ? "yes" : "NO")
           << std::endl;
 
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
@@ -202,7 +202,7 @@ namespace
     std::ostringstream screen;
     analysis::Simulation sim(p, MPI_COMM_WORLD, screen);
     sim.run();
-    const unsigned int cells = sim.space().dof_handler.get_triangulation().n_active_cells();
+    const unsigned int cells = sim.model().space().dof_handler.get_triangulation().n_active_cells();
     log() << "the run's mesh has the 588 hexahedra of the .msh file: "
           << (cells == 588 ? "yes" : "NO") << std::endl;
     std::ostringstream arguments;

@@ -76,8 +76,8 @@ namespace archdam::analysis
              self.non_converged_times);
     if (self.joint_solver)
       a.records(*self.joint_solver);
-    if (self.massed_foundation)
-      a.records(*self.massed_foundation);
+    if (self.foundation())
+      a.records(*self.foundation());
   }
 
   template <typename Self, typename Archive>
@@ -111,7 +111,7 @@ namespace archdam::analysis
   {
     TimerOutput::Scope t(timer, "dynamic: checkpoints");
     std::ostringstream out;
-    binary::write(out, partition_signature(*fe_space));
+    binary::write(out, partition_signature(model().space()));
     save_step_state(out);
     Saver saver{out};
     visit_records(*this, saver);
@@ -131,7 +131,7 @@ namespace archdam::analysis
     std::istringstream in(resume_payload);
     std::uint64_t      partition = 0;
     binary::read(in, partition);
-    if (Utilities::MPI::logical_or(partition != partition_signature(*fe_space), comm))
+    if (Utilities::MPI::logical_or(partition != partition_signature(model().space()), comm))
       throw InputError("--resume: the model is divided among the MPI processes differently "
                        "from the run that wrote the checkpoint (another partition of the "
                        "mesh); each process can only continue its own part.");

@@ -36,22 +36,22 @@ namespace archdam::analysis
   std::unique_ptr<EnergyBalance>
   Simulation::make_energy_balance() const
   {
-    EnergyBalance::Model model;
-    model.space     = fe_space.get();
-    model.mass      = &mass_matrix;
-    model.stiffness = &stiffness_matrix;
-    model.rayleigh  = p.damping.rayleigh_coefficients();
-    model.newmark   = p.time_integration;
-    model.fluid     = fluid_operators.get();
-    model.density   = p.reservoir.density;
-    if (massed_foundation)
+    EnergyBalance::Model operators;
+    operators.space     = &model().space();
+    operators.mass      = &model().mass();
+    operators.stiffness = &model().stiffness();
+    operators.rayleigh  = p.damping.rayleigh_coefficients();
+    operators.newmark   = p.time_integration;
+    operators.fluid     = model().fluid();
+    operators.density   = p.reservoir.density;
+    if (foundation())
       {
-        model.viscous    = massed_foundation->viscous_boundary();
-        model.prescribed = massed_foundation->prescribed_dofs();
+        operators.viscous    = foundation()->viscous_boundary();
+        operators.prescribed = foundation()->prescribed_dofs();
       }
     else
-      model.influence = &influence_load;
-    return std::make_unique<EnergyBalance>(model);
+      operators.influence = &model().influence_loads();
+    return std::make_unique<EnergyBalance>(operators);
   }
 
   void
@@ -62,16 +62,16 @@ namespace archdam::analysis
     const std::string &directory = p.output.directory;
     recorders.clear();
     recorders.push_back(make_energy_balance());
-    recorders.push_back(std::make_unique<output::MonitorHistories>(*monitor, directory, comm));
+    recorders.push_back(std::make_unique<output::MonitorHistories>(model().monitors(), directory, comm));
     if (p.reservoir.has_pressure())
       recorders.push_back(std::make_unique<output::PressureRecorder>(
-        p.reservoir.pressure_points, p.reservoir.profile_times, *fe_space, directory));
-    if (node_pairs)
+        p.reservoir.pressure_points, p.reservoir.profile_times, model().space(), directory));
+    if (model().joint_pairs())
       recorders.push_back(std::make_unique<output::JointOutput>(
-        p.joints, *node_pairs, directory, "dynamic", p.output.field_interval));
+        p.joints, *model().joint_pairs(), directory, "dynamic", p.output.field_interval));
     recorders.push_back(
-      std::make_unique<output::StressEnvelope>(*fe_space, p.materials, directory));
-    recorders.push_back(std::make_unique<output::FieldWriter>(p.output, *fe_space, p.materials));
+      std::make_unique<output::StressEnvelope>(model().space(), p.materials, directory));
+    recorders.push_back(std::make_unique<output::FieldWriter>(p.output, model().space(), p.materials));
   }
 
   output::StepRecord
@@ -79,20 +79,20 @@ namespace archdam::analysis
   {
     return {current,
             joint_solver.get(),
-            massed_foundation ? Tensor<1, dim>() : ground_motion->acceleration(current.time)};
+            foundation() ? Tensor<1, dim>() : model().ground_motion().acceleration(current.time)};
   }
 
   void
   Simulation::check_motion_duration(const double end)
   {
-    if (ground_motion->empty())
+    if (model().ground_motion().empty())
       return;
     std::ostringstream text;
     text << std::setprecision(6);
-    if (end > ground_motion->duration() + 0.5 * p.time_integration.time_step)
+    if (end > model().ground_motion().duration() + 0.5 * p.time_integration.time_step)
       {
         text << "the dynamic stage runs to t = " << end << " s, past the end of the ground "
-             << "motion at " << ground_motion->duration() << " s: from there on the ground is "
+             << "motion at " << model().ground_motion().duration() << " s: from there on the ground is "
              << "at rest and the dam vibrates freely (Time integration/End time).";
         warn(text.str());
       }
@@ -100,7 +100,7 @@ namespace archdam::analysis
     // envelope is still high, its last seconds are forced down by the
     // end-at-rest correction instead of decaying (doc/ground-motion.md).
     for (unsigned int d = 0; d < 3; ++d)
-      if (ground_motion->generation_report(d))
+      if (model().ground_motion().generation_report(d))
         {
           const auto   s         = p.ground_motion.generated.settings(d, "");
           const double intensity = s.envelope(s.duration);
@@ -130,7 +130,7 @@ namespace archdam::analysis
   {
     const double dt  = p.time_integration.time_step;
     const double end = p.time_integration.end_time > 0 ? p.time_integration.end_time :
-                                                         ground_motion->duration();
+                                                         model().ground_motion().duration();
     if (end <= 0)
       throw InputError("Time integration/End time is 0 and there is no ground motion to "
                        "take the duration from.");
@@ -139,43 +139,43 @@ namespace archdam::analysis
 
     const auto rayleigh = p.damping.rayleigh_coefficients();
     std::unique_ptr<time::NewmarkIntegrator> newmark;
-    screen << "Dynamic stage: factorizing the effective matrix (" << fe_space->dof_handler.n_dofs()
+    screen << "Dynamic stage: factorizing the effective matrix (" << model().space().dof_handler.n_dofs()
            << " DOFs)" << std::endl;
     {
       TimerOutput::Scope t(timer, "dynamic: factorization");
-      if (fluid_operators)
+      if (model().fluid())
         {
           // The coupled dam-water system, symmetric indefinite (paper eq. 3.2).
           coupled = std::make_unique<physics::reservoir::CoupledSystem>();
-          physics::reservoir::form_coupled_system(*fluid_operators, p.reservoir.density,
-                                                  p.time_integration.beta2, dt, mass_matrix,
-                                                  stiffness_matrix, rayleigh, *coupled);
+          physics::reservoir::form_coupled_system(*model().fluid(), p.reservoir.density,
+                                                  p.time_integration.beta2, dt, model().mass(),
+                                                  model().stiffness(), rayleigh, *coupled);
           // A prescribed outer boundary drives the water too (doc/theory/foundation.md §7).
-          if (auto *boundary = massed_foundation ? massed_foundation->prescribed_dofs() : nullptr)
-            physics::reservoir::form_coupled_columns(*fe_space, interface_pairs,
+          if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
+            physics::reservoir::form_coupled_columns(model().space(), model().interface_pairs(),
                                                      p.reservoir.density,
                                                      p.time_integration.beta2, dt, rayleigh,
                                                      *boundary);
           newmark = std::make_unique<time::NewmarkIntegrator>(
             p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
-            fe_space->constraints, false,
-            massed_foundation ? massed_foundation->dashpots() : nullptr, condensed_interface());
+            model().space().constraints, false,
+            foundation() ? foundation()->dashpots() : nullptr, condensed_interface());
         }
       else
         newmark = std::make_unique<time::NewmarkIntegrator>(
-          p.time_integration, mass_matrix, stiffness_matrix, rayleigh, fe_space->constraints,
-          massed_foundation ? massed_foundation->dashpots() : nullptr, condensed_interface());
+          p.time_integration, model().mass(), model().stiffness(), rayleigh, model().space().constraints,
+          foundation() ? foundation()->dashpots() : nullptr, condensed_interface());
     }
     screen << "  factors: " << std::setprecision(4) << newmark->effective_factor().factor_entries()
            << " entries" << std::endl;
-    if (node_pairs)
+    if (model().joint_pairs())
       start_dynamic_joints(*newmark);
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
 
-    if (massed_foundation)
-      massed_foundation->start(current.u);
+    if (foundation())
+      foundation()->start(current.u);
     if (resume_from) // the records so far come with the checkpoint
       read_checkpoint();
     else
@@ -189,14 +189,14 @@ namespace archdam::analysis
       }
 
     Vector     load;
-    fe_space->reinit(load);
+    model().space().reinit(load);
     const auto start       = std::chrono::steady_clock::now();
     const auto elapsed     = [&] {
       return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     double       last_report = 0.;
     const double report_every = 10.; // seconds of wall time between progress lines
-    const time::DivergenceCheck divergence(*fe_space);
+    const time::DivergenceCheck divergence(model().space());
     double                      last_checkpoint = 0.;
     std::string                 step_before; // the last good step, for the divergence stop
 
@@ -216,8 +216,8 @@ namespace archdam::analysis
           const auto          solve =
             joint_solver ? joints::contact_step_solver(*newmark, *joint_solver, contact)
                                    : time::NewmarkIntegrator::StepSolver();
-          if (massed_foundation)
-            massed_foundation->advance(*newmark, load, current, solve);
+          if (foundation())
+            foundation()->advance(*newmark, load, current, solve);
           else
             newmark->advance(load, current, solve);
           if (joint_solver)
@@ -309,9 +309,9 @@ namespace archdam::analysis
     summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
     const double steps_run = std::max(n_run, 1u); // steps of this run (a resume: since it)
     summary.set("dynamic/wall time per step [s]", wall_time / steps_run);
-    if (massed_foundation)
+    if (foundation())
       summary.set("dynamic/foundation boundary update per step [s]",
-                  massed_foundation->boundary_update_time() / steps_run);
+                  foundation()->boundary_update_time() / steps_run);
     if (joint_solver)
       {
         summary.set("dynamic/contact iterations per step/average",

@@ -25,9 +25,9 @@ namespace archdam::analysis
   std::vector<types::global_dof_index>
   Simulation::condensed_interface() const
   {
-    if (node_pairs && p.joints.solver == joints::Solver::mixed &&
+    if (model().joint_pairs() && p.joints.solver == joints::Solver::mixed &&
         p.joints.mixed_solves == joints::MixedSolves::condensed_on_the_pairs)
-      return node_pairs->interface();
+      return model().joint_pairs()->interface();
     return {};
   }
 
@@ -43,8 +43,8 @@ namespace archdam::analysis
                                        const Vector                   &rhs)
   {
     joint_solver =
-      joints::make_joint_solver(p.joints, *node_pairs, 1., stiffness, stiffness_factor);
-    const std::vector<double> unloaded(dim * node_pairs->size(), 0.);
+      joints::make_joint_solver(p.joints, *model().joint_pairs(), 1., stiffness, stiffness_factor);
+    const std::vector<double> unloaded(dim * model().joint_pairs()->size(), 0.);
     const auto                step = joint_solver->solve(rhs, unloaded, u_static);
     if (!step.converged)
       non_converged_times.push_back(0.);
@@ -55,7 +55,7 @@ namespace archdam::analysis
       summary.set("static/time to build the flexibility matrix [s]", mixed->build_time);
 
     // The static stage's one state, its pair fields always written.
-    output::JointOutput static_output(p.joints, *node_pairs, p.output.directory, "static", 1);
+    output::JointOutput static_output(p.joints, *model().joint_pairs(), p.output.directory, "static", 1);
     static_output.start(step_record());
     static_output.finish(summary, screen);
   }
@@ -63,7 +63,7 @@ namespace archdam::analysis
   void
   Simulation::start_dynamic_joints(const time::NewmarkIntegrator &newmark)
   {
-    auto solver = joints::make_joint_solver(p.joints, *node_pairs, newmark.displacement_factor(),
+    auto solver = joints::make_joint_solver(p.joints, *model().joint_pairs(), newmark.displacement_factor(),
                                             newmark.effective(), newmark.effective_factor());
     if (joint_solver) // the static state: forces, relative displacements, damage
       solver->set_state(*joint_solver);
@@ -84,7 +84,7 @@ namespace archdam::analysis
   void
   Simulation::summarize_joints()
   {
-    summary.set("joints/node pairs", node_pairs->size());
+    summary.set("joints/node pairs", model().joint_pairs()->size());
     summary.set("joints/solver", selection_name(p.joints.solver, joints::solver_names()));
     summary.set("joints/steps not converged", non_converged_times.size());
     for (unsigned int k = 0; k < std::min<std::size_t>(non_converged_times.size(), 20); ++k)

@@ -28,26 +28,26 @@ namespace archdam::analysis
       // on the arch dam with compressible water 100 times more or less gives
       // the same frequencies (5 digits) and residuals below 1e-9 (4e-12).
       const double omega_0        = 2. * numbers::PI * 3.;
-      const double pressure_scale = fluid_operators ?
+      const double pressure_scale = model().fluid() ?
                                       p.reservoir.density * omega_0 * omega_0 *
-                                        physics::reservoir::water_level(p.reservoir, triangulation) :
+                                        physics::reservoir::water_level(p.reservoir, model().triangulation()) :
                                       0.;
-      modes = fluid_operators ?
-                compute_coupled_modes(mass_matrix, stiffness_matrix, *fluid_operators,
+      modes = model().fluid() ?
+                compute_coupled_modes(model().mass(), model().stiffness(), *model().fluid(),
                                       p.reservoir.density, pressure_scale,
-                                      fe_space->constraints, p.modal) :
-                compute_natural_modes(mass_matrix, stiffness_matrix, fe_space->constraints,
+                                      model().space().constraints, p.modal) :
+                compute_natural_modes(model().mass(), model().stiffness(), model().space().constraints,
                                       p.modal);
     }
     for (auto &shape : modes.shapes)
-      fe_space->constraints.distribute(shape);
+      model().space().constraints.distribute(shape);
 
     std::array<double, dim> moving_mass;
     for (unsigned int d = 0; d < dim; ++d)
-      moving_mass[d] = influence_load[d].mean_value() * influence_load[d].size();
+      moving_mass[d] = model().influence_loads()[d].mean_value() * model().influence_loads()[d].size();
 
     screen << "Modal stage: " << modes.omega.size()
-           << (fluid_operators ? " modes of the dam coupled with the water" : " modes")
+           << (model().fluid() ? " modes of the dam coupled with the water" : " modes")
            << " (largest relative residual " << std::scientific << std::setprecision(1)
            << modes.max_residual << std::defaultfloat << ")" << std::endl
            << "  mode  f [Hz]    T [s]     effective mass x, y, z [%]" << std::endl;
@@ -55,7 +55,7 @@ namespace archdam::analysis
     for (unsigned int k = 0; k < modes.omega.size(); ++k)
       {
         const double f     = modes.omega[k] / (2. * numbers::PI);
-        const auto   gamma = participation_factors(modes.shapes[k], influence_load);
+        const auto   gamma = participation_factors(modes.shapes[k], model().influence_loads());
         const std::string key = "modal/mode " + std::to_string(k + 1) + "/";
         summary.set(key + "frequency [Hz]", f);
         summary.set(key + "period [s]", 1. / f);
@@ -78,7 +78,7 @@ namespace archdam::analysis
     if (p.modal.write_mode_shapes)
       {
         TimerOutput::Scope t(timer, "output");
-        write_mode_shapes(p.output.directory, *fe_space, modes);
+        write_mode_shapes(p.output.directory, model().space(), modes);
       }
   }
 } // namespace archdam::analysis

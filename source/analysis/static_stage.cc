@@ -22,24 +22,24 @@ namespace archdam::analysis
       // With water, K + Q + G: the water rows are only there to be
       // nonsingular and carry no load, so the hydrodynamic pressure stays 0.
       SparseMatrix with_water;
-      if (fluid_operators)
-        physics::reservoir::linear_combination(with_water, {{1., &stiffness_matrix},
-                                                            {1., &fluid_operators->Q},
-                                                            {1., &fluid_operators->G}});
-      const SparseMatrix      &K = fluid_operators ? with_water : stiffness_matrix;
-      screen << "Static stage: factorizing K (" << fe_space->dof_handler.n_dofs() << " DOFs)"
+      if (model().fluid())
+        physics::reservoir::linear_combination(with_water, {{1., &model().stiffness()},
+                                                            {1., &model().fluid()->Q},
+                                                            {1., &model().fluid()->G}});
+      const SparseMatrix      &K = model().fluid() ? with_water : model().stiffness();
+      screen << "Static stage: factorizing K (" << model().space().dof_handler.n_dofs() << " DOFs)"
              << std::endl;
       time::FactorizedOperator stiffness_factor;
       stiffness_factor.factorize(K, true, condensed_interface());
       screen << "  factors: " << std::setprecision(4) << stiffness_factor.factor_entries()
              << " entries" << std::endl;
-      Vector rhs = static_load;
-      fe_space->constraints.set_zero(rhs);
-      if (node_pairs)
+      Vector rhs = model().static_load();
+      model().space().constraints.set_zero(rhs);
+      if (model().joint_pairs())
         solve_static_with_joints(K, stiffness_factor, rhs);
       else
         stiffness_factor.solve(u_static, rhs);
-      fe_space->constraints.distribute(u_static);
+      model().space().constraints.distribute(u_static);
       current.u = u_static;
     }
 
@@ -51,20 +51,20 @@ namespace archdam::analysis
            << std::endl;
     summary.set("static/max nodal displacement component [m]", max_u);
     report_static_resultants();
-    for (unsigned int k = 0; k < monitor->monitor_points().size(); ++k)
+    for (unsigned int k = 0; k < model().monitors().monitor_points().size(); ++k)
       {
-        const auto u = monitor->displacement(k, u_static);
+        const auto u = model().monitors().displacement(k, u_static);
         for (unsigned int d = 0; d < dim; ++d)
-          summary.set("static/" + monitor->monitor_points()[k].name + ".u" +
+          summary.set("static/" + model().monitors().monitor_points()[k].name + ".u" +
                         std::string(1, "xyz"[d]) + " [m]",
                       u[d]);
       }
     // The static state's largest tension in the dam (the dynamic stage's
     // peak comes from the stress envelope, output/stress_envelope.h).
     Vector u;
-    fe_space->reinit_ghosted(u);
+    model().space().reinit_ghosted(u);
     u               = u_static;
-    const auto peak = physics::solid::peak_major_principal_stress(*fe_space, p.materials, u);
+    const auto peak = physics::solid::peak_major_principal_stress(model().space(), p.materials, u);
     const std::string key = "static/major principal stress in the dam [Pa]/";
     summary.set(key + "largest", peak.value);
     for (unsigned int d = 0; d < dim; ++d)
@@ -85,12 +85,12 @@ namespace archdam::analysis
     gravity[dim - 1] = p.static_loads.gravity ? -p.static_loads.g : 0.;
     const bool   hydrostatic =
       p.static_loads.hydrostatic && p.reservoir.model != reservoir::Model::none;
-    const double level = hydrostatic ? reservoir::water_level(p.reservoir, triangulation) : 0.;
+    const double level = hydrostatic ? reservoir::water_level(p.reservoir, model().triangulation()) : 0.;
     const double rho_g = p.reservoir.density * p.static_loads.g;
     Vector       u;
-    fe_space->reinit_ghosted(u);
+    model().space().reinit_ghosted(u);
     u            = u_static;
-    const auto r = static_resultants(*fe_space, p.materials, u, gravity, [&](const double z) {
+    const auto r = static_resultants(model().space(), p.materials, u, gravity, [&](const double z) {
       return hydrostatic && z < level ? rho_g * (level - z) : 0.;
     });
     if (screen.is_active())

@@ -1,5 +1,6 @@
 #include <archdam/base/case_file.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/selection.h>
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/exceptions.h>
@@ -8,6 +9,7 @@
 #include <boost/property_tree/ptree.hpp>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <functional>
 #include <sstream>
 
@@ -246,27 +248,47 @@ namespace archdam
   void
   print_parameters(std::ostream &out, const std::string &format)
   {
+    // The formats of --print-parameters; text is ArchDam's own reference.
+    enum class Format
+    {
+      text,
+      json,
+      xml,
+      latex
+    };
+    const SelectionNames<Format> formats = {{"text", Format::text},
+                                            {"json", Format::json},
+                                            {"xml", Format::xml},
+                                            {"latex", Format::latex}};
+    const auto chosen = std::find_if(formats.begin(), formats.end(),
+                                     [&](const auto &f) { return f.first == format; });
+    if (chosen == formats.end())
+      throw InputError("--print-parameters: unknown format '" + format +
+                       "' (text, json, xml or latex).");
     Parameters       p;
     ParameterHandler prm;
     p.add_parameters(prm);
-    if (format == "json")
-      prm.print_parameters(out, ParameterHandler::JSON);
-    else if (format == "xml")
-      prm.print_parameters(out, ParameterHandler::XML);
-    else if (format == "latex")
-      prm.print_parameters(out, ParameterHandler::LaTeX);
-    else if (format == "text")
+    switch (chosen->second)
       {
-        std::stringstream json;
-        prm.print_parameters(json, ParameterHandler::JSON);
-        boost::property_tree::ptree tree;
-        boost::property_tree::read_json(json, tree);
-        out << "# ArchDam parameters: every entry with its documentation, allowed values\n"
-               "# and default. A case file sets only what differs from the default.\n\n";
-        print_reference(tree, 0, out);
+        case Format::json:
+          prm.print_parameters(out, ParameterHandler::JSON);
+          break;
+        case Format::xml:
+          prm.print_parameters(out, ParameterHandler::XML);
+          break;
+        case Format::latex:
+          prm.print_parameters(out, ParameterHandler::LaTeX);
+          break;
+        case Format::text:
+          {
+            std::stringstream json;
+            prm.print_parameters(json, ParameterHandler::JSON);
+            boost::property_tree::ptree tree;
+            boost::property_tree::read_json(json, tree);
+            out << "# ArchDam parameters: every entry with its documentation, allowed values\n"
+                   "# and default. A case file sets only what differs from the default.\n\n";
+            print_reference(tree, 0, out);
+          }
       }
-    else
-      throw InputError("--print-parameters: unknown format '" + format +
-                       "' (text, json, xml or latex).");
   }
 } // namespace archdam

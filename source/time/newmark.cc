@@ -67,18 +67,29 @@ namespace archdam::time
   NewmarkIntegrator::NewmarkIntegrator(const NewmarkParameters         &p,
                                        const SparseMatrix              &mass,
                                        const SparseMatrix              &stiffness,
+                                       const SparseMatrix              *damping,
                                        const std::pair<double, double>  rayleigh,
                                        const AffineConstraints<double> &constraints,
-                                       const Vector                    *boundary_dashpots,
-                                       const std::vector<types::global_dof_index> &factor_interface)
+                                       const Vector                    *boundary_dashpots)
     : p(p)
     , dt(p.time_step)
     , M(mass)
     , K(stiffness)
+    , D(damping)
     , alpha(rayleigh.first)
     , beta(rayleigh.second)
     , constraints(constraints)
     , dashpots(boundary_dashpots)
+  {}
+
+  NewmarkIntegrator::NewmarkIntegrator(const NewmarkParameters         &p,
+                                       const SparseMatrix              &mass,
+                                       const SparseMatrix              &stiffness,
+                                       const std::pair<double, double>  rayleigh,
+                                       const AffineConstraints<double> &constraints,
+                                       const Vector                    *boundary_dashpots,
+                                       const std::vector<types::global_dof_index> &factor_interface)
+    : NewmarkIntegrator(p, mass, stiffness, nullptr, rayleigh, constraints, boundary_dashpots)
   {
     // Kbar = (1 + alpha beta1 dt) M + (beta beta1 dt + beta2 dt^2) K  (eq. 2.4).
     // M and K share one sparsity pattern (solid_operators.cc), so PETSc can
@@ -132,15 +143,7 @@ namespace archdam::time
                                        const bool                       positive_definite,
                                        const Vector                    *boundary_dashpots,
                                        const std::vector<types::global_dof_index> &factor_interface)
-    : p(p)
-    , dt(p.time_step)
-    , M(mass)
-    , K(stiffness)
-    , D(&damping)
-    , alpha(0.)
-    , beta(0.)
-    , constraints(constraints)
-    , dashpots(boundary_dashpots)
+    : NewmarkIntegrator(p, mass, stiffness, &damping, {0., 0.}, constraints, boundary_dashpots)
   {
     // Kbar = M + beta1 dt D + beta2 dt^2 K on the common pattern.
     build_effective_operator(p.beta2 * dt * dt, {{1., &M}, {p.beta1 * dt, D}},

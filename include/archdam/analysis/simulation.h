@@ -2,27 +2,20 @@
 
 #include <archdam/analysis/energy_balance.h>
 #include <archdam/analysis/modal_analysis.h>
-#include <archdam/fe/fe_space.h>
-#include <archdam/joints/joint_faces.h>
+#include <archdam/analysis/model.h>
 #include <archdam/joints/joint_solver.h>
-#include <archdam/loads/ground_motion.h>
 #include <archdam/output/checkpoint.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/joint_output.h>
 #include <archdam/output/monitor_histories.h>
-#include <archdam/output/monitors.h>
 #include <archdam/output/pressure_recorder.h>
 #include <archdam/output/stress_envelope.h>
-#include <archdam/output/summary.h>
-#include <archdam/parameters/parameters.h>
 #include <archdam/physics/reservoir/coupled_system.h>
-#include <archdam/physics/foundation/massed_foundation.h>
 #include <archdam/physics/solid/stress.h>
 #include <archdam/time/newmark.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
-#include <deal.II/distributed/shared_tria.h>
 
 #include <memory>
 
@@ -30,9 +23,12 @@ namespace archdam::analysis
 {
   /**
    * One case from start to end (doc/theory/conventions.md §1): the model is built once
-   * (mesh, DOFs, M, K, loads), then the stages run in order, static (gravity),
-   * modal (natural modes) and dynamic (ground motion from the static state), each writing its
-   * results; summary.json is written at the end.
+   * (model.h: mesh, DOFs, M, K, loads), then the stages drive it in order,
+   * static (gravity; static_stage.cc), modal (natural modes; modal_stage.cc)
+   * and dynamic (ground motion from the static state; dynamic_stage.cc), each
+   * writing its results; summary.json is written at the end. What the stages
+   * leave (the state, the modes, the joints, the records) is read here, what
+   * the model is made of through model().
    */
   class Simulation
   {
@@ -47,7 +43,7 @@ namespace archdam::analysis
     run(bool resume = false);
 
     /// Build the model only: mesh, DOFs, M, K and loads (run() does it first).
-    void
+    const Model &
     setup_model();
 
     /// `archdam CASE.prm --mesh-only`: build the model mesh, print its report,
@@ -56,28 +52,14 @@ namespace archdam::analysis
     void
     run_mesh_only();
 
-    // What a run leaves behind, for tests and benchmarks.
-    const fe::FESpace &
-    space() const
+    /// The model the stages run on (setup_model() or run() built it).
+    const Model &
+    model() const
     {
-      return *fe_space;
+      return *built_model;
     }
-    const SparseMatrix &
-    mass() const
-    {
-      return mass_matrix;
-    }
-    const SparseMatrix &
-    stiffness() const
-    {
-      return stiffness_matrix;
-    }
-    /// The water's operators (compressible and incompressible models only).
-    const physics::reservoir::FluidOperators *
-    fluid() const
-    {
-      return fluid_operators.get();
-    }
+
+    // What the stages leave behind, for tests and benchmarks.
     const time::NewmarkState &
     state() const
     {
@@ -106,24 +88,14 @@ namespace archdam::analysis
     {
       return modes;
     }
-    const output::Monitors &
-    monitors() const
-    {
-      return *monitor;
-    }
     /// Wall times and call counts of the stages.
     const dealii::TimerOutput &
     timers() const
     {
       return timer;
     }
-    /// The joints in frictional contact (null for glued joints): node pairs
-    /// and their state after the last stage.
-    const joints::NodePairs *
-    joint_pairs() const
-    {
-      return node_pairs.get();
-    }
+    /// The joints in frictional contact (null for glued joints): their state
+    /// after the last stage.
     const joints::JointSolver *
     joint_state() const
     {
@@ -133,15 +105,6 @@ namespace archdam::analysis
   private:
     void
     create_output_directory();
-    /// The whole model mesh, water included (geometry::build_model_mesh()),
-    /// with its report printed and added to the summary.
-    void
-    build_mesh(dealii::Triangulation<dim> &model);
-    /// The static stage with frictional joints and the mixed method needs
-    /// every dam block held by more than its joints: an InputError naming
-    /// the blocks that are not (geometry/support.h).
-    void
-    check_static_support(const dealii::Triangulation<dim> &model) const;
     void
     run_static_stage();
     void
@@ -243,10 +206,13 @@ namespace archdam::analysis
     void
     summarize_joints();
 
-    /// Massed foundation (doc/theory/foundation.md §3-§4): free field from the ground motion
-    /// and the transmitting boundary.
-    void
-    setup_massed_foundation(physics::solid::InertiaOf inertia);
+    /// The massed foundation's outer boundary, whose histories the
+    /// dynamic stage advances, else null.
+    physics::foundation::MassedFoundation *
+    foundation() const
+    {
+      return built_model->foundation();
+    }
 
     /// F(t) = F_static - sum_d a_g,d(t) M iota_d (relative formulation), and
     /// in the fluid rows of the coupled system -sum_d a_g,d(t) Phi S iota_d;
@@ -259,26 +225,14 @@ namespace archdam::analysis
     MPI_Comm                                 comm;
     dealii::ConditionalOStream               screen;
     dealii::TimerOutput                      timer;
-    dealii::parallel::shared::Triangulation<dim> triangulation;
-    std::vector<joints::JointFacePair>       joint_faces;
-    std::unique_ptr<fe::FESpace>             fe_space;
-    std::unique_ptr<loads::GroundMotion>     ground_motion;
-    /// Massed foundation only: the free field and the outer boundary.
-    std::unique_ptr<physics::foundation::FreeField>        free_field;
-    std::unique_ptr<physics::foundation::MassedFoundation> massed_foundation;
-    SparseMatrix                             mass_matrix, stiffness_matrix;
-    Vector                                   static_load, u_static;
-    std::array<Vector, dim>                  influence_load;
-    std::vector<physics::reservoir::InterfacePair>               interface_pairs;
-    std::unique_ptr<physics::reservoir::FluidOperators>          fluid_operators;
+    std::unique_ptr<Model>                   built_model;
+    Vector                                   u_static;
     std::unique_ptr<physics::reservoir::CoupledSystem>           coupled;
     time::NewmarkState                       current;
     NaturalModes                             modes;
-    std::unique_ptr<output::Monitors>        monitor;
     /// The dynamic stage's results (make_recorders()).
     std::vector<std::unique_ptr<output::Recorder>> recorders;
     output::Summary                          summary;
-    std::unique_ptr<joints::NodePairs>       node_pairs;
     std::unique_ptr<joints::JointSolver>     joint_solver;
     /// Contact iterations per dynamic step: sum, maximum; flagged steps.
     unsigned long                            contact_iterations = 0;

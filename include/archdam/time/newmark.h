@@ -185,6 +185,16 @@ namespace archdam::time
     Vector                                   up, vp, rhs, tmp, da;
     Vector prescribed_a, prescribed_v, prescribed_u, reduced_load;
 
+    /// What both public constructors set (@p damping null: Rayleigh damping
+    /// from @p rayleigh); each then builds its own effective operator.
+    NewmarkIntegrator(const NewmarkParameters                 &p,
+                      const SparseMatrix                      &mass,
+                      const SparseMatrix                      &stiffness,
+                      const SparseMatrix                      *damping,
+                      std::pair<double, double>                rayleigh,
+                      const dealii::AffineConstraints<double> &constraints,
+                      const Vector                            *boundary_dashpots);
+
     /// Add beta1 dt diag(dashpots) to Kbar (the viscous boundary).
     void
     add_dashpots_to_effective_matrix();

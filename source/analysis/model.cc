@@ -1,0 +1,175 @@
+#include <archdam/analysis/model.h>
+#include <archdam/base/input_error.h>
+#include <archdam/geometry/ids.h>
+#include <archdam/geometry/mesh.h>
+#include <archdam/geometry/support.h>
+#include <archdam/output/mesh_report.h>
+#include <archdam/physics/reservoir/wetted_face_loads.h>
+
+#include <iomanip>
+#include <limits>
+
+namespace archdam::analysis
+{
+  using namespace dealii;
+
+  void
+  Model::build_mesh(const Parameters &p, const ConditionalOStream &screen,
+                    output::Summary &summary, Triangulation<dim> &model)
+  {
+    screen << "Building the mesh (Mesh/Source = "
+           << selection_name(p.mesh.source, geometry::mesh_source_names()) << ")" << std::endl;
+    geometry::build_model_mesh(p.mesh, p.base_directory, model);
+    const auto report = output::make_mesh_report(model, p.finite_element.degree);
+    if (screen.is_active())
+      report.print(screen.get_stream());
+    report.add_to(summary);
+    check_static_support(p, model);
+  }
+
+  void
+  Model::check_static_support(const Parameters &p, const Triangulation<dim> &model)
+  {
+    if (!p.joints.frictional() || p.joints.solver != joints::Solver::mixed ||
+        !p.analysis.runs("static"))
+      return;
+    const auto blocks = geometry::blocks_held_by_joints_alone(model);
+    if (blocks.empty())
+      return;
+    std::string list;
+    for (const unsigned int k : blocks)
+      list += (list.empty() ? "" : ", ") + std::to_string(k);
+    throw InputError(
+      "Static stage: dam block" + std::string(blocks.size() > 1 ? "s " : " ") + list +
+      (blocks.size() > 1 ? " rest" : " rests") +
+      " on joints alone: no part of " + (blocks.size() > 1 ? "them" : "it") +
+      " is tied to the rock or to the model's outer boundary (ids 1, 2). The mixed method "
+      "solves the static stage with K, which has no inverse for such a block "
+      "(doc/theory/joints.md §8). Use Contraction joints/Solver = monolithic, whose "
+      "penalty springs hold the block on its joints, or tie the block to the rock.");
+  }
+
+  Model::Model(const Parameters &p, const MPI_Comm comm, const ConditionalOStream &screen,
+               output::Summary &summary)
+    : mesh(comm)
+  {
+    // The water cells stay unless the reservoir is empty (doc/theory/reservoir.md §7);
+    // they carry the pressure only in the compressible and incompressible
+    // models.
+    namespace reservoir = physics::reservoir;
+    const auto         water = p.reservoir.model;
+    Triangulation<dim> model;
+    build_mesh(p, screen, summary, model);
+    if (water == reservoir::Model::none)
+      geometry::remove_water(model);
+    mesh.copy_triangulation(model);
+    joint_faces = joints::pair_joint_faces(mesh);
+    fe_space    = std::make_unique<fe::FESpace>(mesh, p.finite_element);
+    fe_space->pressure_in_water = p.reservoir.has_pressure();
+    fe_space->setup(p.foundation.fixed_boundaries(), [&](AffineConstraints<double> &c) {
+      // Contraction joints/Model = glued: the monolithic dam.
+      if (!p.joints.frictional())
+        joints::tie_joint_dofs(fe_space->dof_handler, joint_faces, fe_space->locally_relevant,
+                               c);
+      reservoir::constrain_free_surface(*fe_space, p.reservoir, c);
+    });
+    if (p.joints.frictional())
+      {
+        node_pairs = std::make_unique<joints::NodePairs>(*fe_space, joint_faces);
+        p.joints.check_per_joint(node_pairs->n_joints());
+        screen << "Joints: " << node_pairs->n_joints() << " in frictional contact, "
+               << node_pairs->size() << " node pairs" << std::endl;
+      }
+    if (p.reservoir.has_pressure())
+      {
+        interfaces = reservoir::match_interface_faces(*fe_space);
+        fe_space->add_couplings = [this](DynamicSparsityPattern &dsp) {
+          reservoir::add_interface_couplings(*fe_space, interfaces, dsp);
+        };
+      }
+
+    unsigned int n_dam = 0, n_rock = 0, n_water = 0;
+    for (const auto &cell : mesh.active_cell_iterators())
+      (ids::is_dam(cell->material_id())        ? n_dam :
+       cell->material_id() == ids::water ? n_water :
+                                                 n_rock) += 1;
+    screen << "Mesh: " << mesh.n_active_cells() << " cells (dam " << n_dam
+           << ", rock " << n_rock << (n_water > 0 ? ", water " + std::to_string(n_water) : "")
+           << "), " << fe_space->dof_handler.n_dofs() << " DOFs" << std::endl;
+
+    const auto inertia = p.foundation.rock_has_mass() ? physics::solid::InertiaOf::dam_and_rock :
+                                                        physics::solid::InertiaOf::dam;
+    physics::solid::assemble_mass_and_stiffness(*fe_space, p.materials, inertia, mass_matrix,
+                                                stiffness_matrix);
+    const double level =
+      water == reservoir::Model::none ? 0. : reservoir::water_level(p.reservoir, mesh);
+    if (water == reservoir::Model::westergaard)
+      reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
+    if (p.reservoir.has_pressure())
+      {
+        fluid_operators = std::make_unique<reservoir::FluidOperators>();
+        reservoir::assemble_fluid_operators(*fe_space, p.reservoir, p.static_loads.g,
+                                            interfaces, *fluid_operators);
+      }
+
+    // Static load: self-weight b = -g e_z (doc/theory/loading-sequence.md §1).
+    Tensor<1, dim> gravity;
+    gravity[dim - 1] = p.static_loads.gravity ? -p.static_loads.g : 0.;
+    physics::solid::assemble_inertia_load(*fe_space, p.materials,
+                                          p.static_loads.gravity_on_rock ?
+                                            physics::solid::InertiaOf::dam_and_rock :
+                                            physics::solid::InertiaOf::dam,
+                                          gravity, static_forces);
+    if (p.static_loads.hydrostatic && water != reservoir::Model::none)
+      reservoir::add_hydrostatic_load(*fe_space, p.reservoir.density, p.static_loads.g, level,
+                                      static_forces);
+    // Influence loads M iota_d of the relative formulation (doc/theory/foundation.md §2).
+    for (unsigned int d = 0; d < dim; ++d)
+      physics::solid::assemble_inertia_load(*fe_space, p.materials, inertia,
+                                            Point<dim>::unit_vector(d), influence[d]);
+
+    motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
+    if (p.foundation.rock_has_mass())
+      setup_massed_foundation(p, inertia, screen);
+    monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
+  }
+
+  void
+  Model::setup_massed_foundation(const Parameters                &p,
+                                 const physics::solid::InertiaOf  inertia,
+                                 const ConditionalOStream        &screen)
+  {
+    // The free surface of the half-space is the top of the rock, its bottom
+    // the model's (doc/theory/foundation.md §4).
+    double z_top = -std::numeric_limits<double>::max(), z_bottom = -z_top;
+    for (const auto &cell : mesh.active_cell_iterators())
+      for (const auto v : cell->vertex_indices())
+        {
+          z_bottom = std::min(z_bottom, cell->vertex(v)[dim - 1]);
+          if (cell->material_id() == ids::rock)
+            z_top = std::max(z_top, cell->vertex(v)[dim - 1]);
+        }
+    free_field = std::make_unique<physics::foundation::FreeField>(
+      physics::foundation::FreeField::of_ground_motion(*motion, p.materials.rock, z_top,
+                                                       z_bottom));
+    massed_foundation = physics::foundation::make_massed_foundation(
+      p.foundation, *fe_space, p.materials, inertia, *free_field, p.time_integration.time_step);
+    massed_foundation->add_springs(stiffness_matrix);
+    using physics::foundation::TransmittingBoundary;
+    const TransmittingBoundary boundary = p.foundation.transmitting_boundary;
+    if (boundary == TransmittingBoundary::viscous && p.foundation.spring_distance == 0. &&
+        p.analysis.runs("static"))
+      throw InputError("Foundation: the viscous boundary without springs (Spring distance = 0) "
+                       "does not support the model in the static stage; set Spring distance "
+                       "> 0, or use the MTF or the fixed boundary.");
+    screen << "Massed foundation: "
+           << selection_name(boundary, physics::foundation::transmitting_boundary_names())
+           << " boundary; free surface at z = " << z_top << " m, bottom at z = " << z_bottom
+           << " m; the ground motion reaches the surface after " << std::setprecision(4)
+           << free_field->delay(0) << " s (horizontal), " << free_field->delay(dim - 1)
+           << " s (vertical)";
+    if (const std::string details = massed_foundation->details(); !details.empty())
+      screen << "; " << details;
+    screen << std::endl;
+  }
+} // namespace archdam::analysis
