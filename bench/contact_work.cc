@@ -22,9 +22,10 @@
 // positive = dissipated (friction), negative = created. It is classified by
 // the pair's state at the start and at the end of the step. The sum over the
 // pairs is checked against the energy balance run alongside.
-// Cases: Beta1 = 0.5, Beta2 = 0.25 (average acceleration) and Beta1 = 0.6,
-// Beta2 = 0.3025 at each time step, in one process run; a case that diverges
-// is reported up to its last good step.
+// Cases: at each time step, the trapezoidal pair forces with Beta1 = 0.5,
+// Beta2 = 0.25 (average acceleration) and Beta1 = 0.6, Beta2 = 0.3025, and the
+// step impulse with Beta1 = 0.5 (doc/theory/joints.md §10), in one process
+// run; a case that diverges is reported up to its last good step.
 // Reported per case: the input work, the contact work (sum over the pairs,
 // and the energy balance's term), its positive (dissipated) and negative
 // (created) parts; by transition: pair-steps, net, dissipated, created, the
@@ -114,6 +115,7 @@ namespace
   struct Case
   {
     double       beta1 = 0.5, beta2 = 0.25, dt = 0.01;
+    joints::ContactInTime contact = joints::ContactInTime::trapezoidal;
     unsigned int steps = 0, steps_run = 0;
     std::string  stopped; ///< why the case ended early, if it did
     double       input = 0., balance_contact = 0., algorithmic = 0., balance_error = 0.;
@@ -191,13 +193,15 @@ namespace
   };
 
   Case
-  run_case(const Model &model, const double beta1, const double dt, const double end)
+  run_case(const Model &model, const double beta1, const joints::ContactInTime contact,
+           const double dt, const double end)
   {
     const Parameters         &p     = model.p;
     const fe::FESpace        &space = model.sim.model().space();
     const joints::NodePairs  &pairs = *model.sim.model().joint_pairs();
     Case                      c;
-    c.beta1 = beta1;
+    c.beta1   = beta1;
+    c.contact = contact;
     // The strongest damping of the highest frequencies for this Beta1
     // (doc/theory/time-integration.md §6).
     c.beta2 = (beta1 + 0.5) * (beta1 + 0.5) / 4.;
@@ -217,7 +221,9 @@ namespace
     // with the default Mixed method solves.
     time::NewmarkIntegrator newmark(np, model.sim.model().mass(), model.sim.model().stiffness(), rayleigh,
                                     space.constraints, nullptr, pairs.interface());
-    auto solver = joints::make_joint_solver(p.joints, pairs, newmark.displacement_factor(),
+    joints::JointParameters jp = p.joints;
+    jp.contact_in_time         = contact;
+    auto solver = joints::make_joint_solver(jp, pairs, newmark.displacement_factor(),
                                             newmark.effective(), newmark.effective_factor());
     solver->set_state(*model.sim.joint_state());
 
@@ -241,7 +247,7 @@ namespace
     for (unsigned int n = 1; n <= c.steps; ++n)
       {
         const std::vector<PairState> state = solver->state;
-        const std::vector<double>    force = solver->force, w = solver->w;
+        const std::vector<double>    force = solver->pair_load, w = solver->w;
         const auto                   ag    = model.motion.acceleration(n * dt);
         load                               = model.gravity;
         for (unsigned int d = 0; d < dim; ++d)
@@ -268,7 +274,7 @@ namespace
               {
                 const unsigned int j = dim * i + k;
                 const double       w_k =
-                  0.5 * (force[j] + solver->force[j]) * (solver->w[j] - w[j]);
+                  0.5 * (force[j] + solver->pair_load[j]) * (solver->w[j] - w[j]);
                 work += w_k;
                 if (k == 0)
                   normal = w_k;
@@ -300,11 +306,21 @@ namespace
     return whole == 0. ? 0 : std::lround(100. * part / whole);
   }
 
+  /// "Beta1 = 0.5" and, for the step impulse, ", step impulse".
+  std::string
+  scheme_name(const Case &c)
+  {
+    std::ostringstream s;
+    s << "Beta1 = " << c.beta1
+      << (c.contact == joints::ContactInTime::step_impulse ? ", step impulse" : "");
+    return s.str();
+  }
+
   void
   print_case(std::ostream &out, const Case &c, const joints::NodePairs &pairs)
   {
     const Work total = c.total();
-    out << std::setprecision(4) << "\n=== Beta1 = " << c.beta1 << ", Beta2 = " << c.beta2
+    out << std::setprecision(4) << "\n=== " << scheme_name(c) << ", Beta2 = " << c.beta2
         << ", dt = " << c.dt << " s: " << c.steps_run << " of " << c.steps << " steps (t = "
         << c.steps_run * c.dt << " s), wall " << std::setprecision(3) << c.wall
         << " s, contact iterations per step average "
@@ -403,17 +419,23 @@ main(int argc, char **argv)
       << "pairs' nodes " << at_pairs << " kg (" << percent(at_pairs, model.influence[0].l1_norm())
       << " %)\n";
 
+  // The schemes at every time step: the trapezoidal pair forces with Beta1 =
+  // 0.5 and 0.6, and the step impulse with Beta1 = 0.5 (doc/theory/joints.md §10).
+  const std::vector<std::pair<double, joints::ContactInTime>> schemes = {
+    {0.5, joints::ContactInTime::trapezoidal},
+    {0.6, joints::ContactInTime::trapezoidal},
+    {0.5, joints::ContactInTime::step_impulse}};
   std::vector<Case> cases;
   for (const double dt : time_steps)
-    for (const double beta1 : {0.5, 0.6})
+    for (const auto &[beta1, contact] : schemes)
       {
-        cases.push_back(run_case(model, beta1, dt, end));
+        cases.push_back(run_case(model, beta1, contact, dt, end));
         print_case(out, cases.back(), pairs);
         out << std::flush;
       }
 
   out << "\n=== summary [J]: created = the sum of the negative pair-step works\n"
-      << std::left << std::setw(7) << "Beta1" << std::setw(8) << "dt [s]" << std::right
+      << std::left << std::setw(28) << "scheme" << std::setw(8) << "dt [s]" << std::right
       << std::setw(7) << "t end" << std::setw(11) << "input" << std::setw(11) << "contact"
       << std::setw(11) << "dissipated" << std::setw(11) << "created" << std::setw(10)
       << "cr./inp.";
@@ -423,7 +445,7 @@ main(int argc, char **argv)
   for (const Case &c : cases)
     {
       const Work t = c.total();
-      out << std::setprecision(3) << std::left << std::setw(7) << c.beta1 << std::setw(8)
+      out << std::setprecision(3) << std::left << std::setw(28) << scheme_name(c) << std::setw(8)
           << c.dt << std::right << std::setw(7) << c.steps_run * c.dt << std::setw(11)
           << c.input << std::setw(11) << t.net() << std::setw(11) << t.dissipated
           << std::setw(11) << t.created << std::setw(10) << -t.created / c.input;
@@ -445,7 +467,7 @@ main(int argc, char **argv)
   out << "\n";
   for (const Case &c : cases)
     {
-      out << "  Beta1 = " << c.beta1 << ", dt = " << std::setw(6) << c.dt << ":";
+      out << "  " << scheme_name(c) << ", dt = " << std::setw(6) << c.dt << ":";
       for (const auto &h : c.history)
         out << std::setw(10) << -h[2] / h[1];
       out << "\n";
@@ -455,10 +477,11 @@ main(int argc, char **argv)
   const auto created = [&](const Case &c) { return c.history[common - 1][2]; };
   out << "ratios of the created energy measured in this run, up to t = "
       << cases.front().history[common - 1][0] << " s (reached by every case):\n";
-  for (unsigned int i = 0; i + 1 < cases.size(); i += 2)
+  const std::size_t n = schemes.size();
+  for (unsigned int i = 0; i + 1 < cases.size(); i += n)
     out << "  dt = " << cases[i].dt << " s: Beta1 = 0.5 / Beta1 = 0.6: "
         << created(cases[i]) / created(cases[i + 1]) << "\n";
-  for (unsigned int i = 0; i + 2 < cases.size(); ++i)
-    out << "  Beta1 = " << cases[i].beta1 << ": dt = " << cases[i].dt << " s / dt = "
-        << cases[i + 2].dt << " s: " << created(cases[i]) / created(cases[i + 2]) << "\n";
+  for (unsigned int i = 0; i + n < cases.size(); ++i)
+    out << "  " << scheme_name(cases[i]) << ": dt = " << cases[i].dt << " s / dt = "
+        << cases[i + n].dt << " s: " << created(cases[i]) / created(cases[i + n]) << "\n";
 }

@@ -236,4 +236,8 @@ main(int argc, char **argv)
   run_archdam("a monolithic contact solver with a penalty too large to solve",
       {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
        "Contraction joints/Solver=monolithic", "--set", "Contraction joints/Penalty factor=1e300"});
+  run_archdam("the step impulse with the monolithic contact solver",
+      {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
+       "Contraction joints/Solver=monolithic", "--set",
+       "Contraction joints/Contact in time=step impulse"});
 }

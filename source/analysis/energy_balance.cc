@@ -168,7 +168,7 @@ namespace archdam::analysis
     w_static.clear();
     if (joints)
       {
-        f_static = f_prev = joints->force;
+        f_static = f_prev = joints->pair_load;
         w_static = w_prev = joints->w;
       }
     sums = EnergyTerms();
@@ -275,16 +275,19 @@ namespace archdam::analysis
 
     if (joints)
       {
-        // The joints absorb f . dw (the load on the dam is -B^T f, doc/theory/joints.md §1).
+        // The joints absorb g . dw with the load g on the dam (-B^T g,
+        // doc/theory/joints.md §1), whose trapezoidal mean is the step's
+        // force with the step impulse (§10) and f's mean with the
+        // trapezoidal forces (g = f).
         for (unsigned int k = 0; k < f_prev.size(); ++k)
           {
             const double work_k =
-              0.5 * (joints->force[k] + f_prev[k]) * (joints->w[k] - w_prev[k]);
+              0.5 * (joints->pair_load[k] + f_prev[k]) * (joints->w[k] - w_prev[k]);
             sums.contact += work_k;
             if (k % dim == 0) // xi, the normal of the pair's frame
               sums.contact_normal += work_k;
           }
-        f_prev = joints->force;
+        f_prev = joints->pair_load;
         w_prev = joints->w;
       }
     t_prev = s.time;

@@ -48,6 +48,16 @@ namespace archdam::joints
                   "largest opening the pair has reached grows to Softening opening "
                   "(keys that crack progressively as the joint opens). Friction is "
                   "the same in both.");
+    add_selection(prm, "Contact in time", contact_in_time, contact_in_time_names(),
+                  "How the pair forces of a dynamic step act in time (doc/theory/joints.md "
+                  "§10): trapezoidal = the forces at the two ends of the step, averaged "
+                  "by the Newmark rule, with the closed pairs held at their positions "
+                  "(the paper's scheme; a pair that opens works against the opening "
+                  "with half its last force and puts energy into the dam); step "
+                  "impulse = one force over the whole step, the closed pairs holding "
+                  "their relative velocity at the step's end at zero: a step cannot "
+                  "create energy at the joints, and persistent contact does not "
+                  "chatter. Step impulse needs the mixed solver.");
     prm.add_parameter("Friction coefficient", law.friction_coefficient,
                       "Coulomb friction coefficient mu of the joint faces.",
                       Patterns::Double(0.));

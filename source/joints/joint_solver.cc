@@ -14,6 +14,8 @@ namespace archdam::joints
     : pairs(pairs)
     , force(dim * pairs.size(), 0.)
     , force_committed(dim * pairs.size(), 0.)
+    , pair_load(dim * pairs.size(), 0.)
+    , load_committed(dim * pairs.size(), 0.)
     , w(dim * pairs.size(), 0.)
     , w_committed(dim * pairs.size(), 0.)
     , state(pairs.size(), PairState::stick)
@@ -37,6 +39,7 @@ namespace archdam::joints
           largest_opening[i] = std::max(largest_opening[i], gap(i));
       }
     force_committed = force;
+    load_committed  = pair_load;
     w_committed     = w;
   }
 
@@ -45,6 +48,8 @@ namespace archdam::joints
   {
     force           = other.force;
     force_committed = other.force_committed;
+    pair_load       = other.pair_load;
+    load_committed  = other.load_committed;
     w               = other.w;
     w_committed     = other.w_committed;
     state           = other.state;
@@ -65,10 +70,11 @@ namespace archdam::joints
     worst          = 0;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
-        double r = state[i] == PairState::separation ? std::max(0., -gap(i)) : std::abs(gap(i));
+        double r =
+          state[i] == PairState::separation ? std::max(0., -approach(i)) : std::abs(closure(i));
         if (state[i] == PairState::stick)
-          r = std::max(r, std::hypot(w[dim * i + 1] - w_committed[dim * i + 1],
-                                     w[dim * i + 2] - w_committed[dim * i + 2]));
+          r = std::max(r, std::hypot(w[dim * i + 1] - target[dim * i + 1],
+                                     w[dim * i + 2] - target[dim * i + 2]));
         if (r > largest)
           {
             largest = r;
@@ -97,8 +103,41 @@ namespace archdam::joints
   }
 
   void
-  JointSolver::start_directions()
+  JointSolver::prepare_step(const time::NewmarkIntegrator &newmark)
   {
+    if (p.contact_in_time != ContactInTime::step_impulse)
+      return;
+    omega = newmark.time_step() / newmark.velocity_factor();
+    Vector x(newmark.predicted_displacement());
+    x.add(-newmark.displacement_factor() / newmark.velocity_factor(),
+          newmark.predicted_velocity());
+    pairs.relative_displacement(x, velocity_target);
+  }
+
+  void
+  JointSolver::set_load()
+  {
+    for (unsigned int j = 0; j < pair_load.size(); ++j)
+      pair_load[j] = omega * force[j] - (omega - 1.) * load_committed[j];
+  }
+
+  void
+  JointSolver::start_solve()
+  {
+    if (velocity_target.empty())
+      {
+        target = w_committed;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          target[dim * i] = -laws[i].initial_gap;
+      }
+    else
+      {
+        target = velocity_target;
+        may_close.resize(pairs.size());
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          may_close[i] = state[i] != PairState::separation || gap(i) <= 0.;
+      }
+
     direction.assign(pairs.size(), Tensor<1, dim>());
     slip_ratio.assign(pairs.size(), 0.);
     for (unsigned int i = 0; i < pairs.size(); ++i)
@@ -131,7 +170,7 @@ namespace archdam::joints
     switch (state[i])
       {
         case PairState::separation:
-          if (gap(i) < -p.gap_tolerance)
+          if (approach(i) < -p.gap_tolerance)
             {
               state[i] = PairState::stick;
               return true;
@@ -156,8 +195,8 @@ namespace archdam::joints
               return separate();
             // the augmented tangential force q = f_t + r dw_t (Alart-Curnier):
             // stick when it falls inside the capacity, else the new direction
-            const double s1 = w[dim * i + 1] - w_committed[dim * i + 1],
-                         s2 = w[dim * i + 2] - w_committed[dim * i + 2];
+            const double s1 = w[dim * i + 1] - target[dim * i + 1],
+                         s2 = w[dim * i + 2] - target[dim * i + 2];
             const double q1 = f[1] + augmentation[i] * s1, q2 = f[2] + augmentation[i] * s2;
             const double q  = std::hypot(q1, q2);
             if (q < tau - p.force_tolerance * f_norm)
@@ -202,6 +241,7 @@ namespace archdam::joints
     return [&newmark, &solver, &step](const Vector &rhs, Vector &da) {
       std::vector<double> w_base;
       solver.pairs.relative_displacement(newmark.predicted_displacement(), w_base);
+      solver.prepare_step(newmark);
       step = solver.solve(rhs, w_base, da);
       solver.accept();
     };
@@ -228,15 +268,15 @@ namespace archdam::joints
   void
   JointSolver::save(std::ostream &out) const
   {
-    binary::write_all(out, force, force_committed, w, w_committed, state, damaged,
-                      largest_opening);
+    binary::write_all(out, force, force_committed, pair_load, load_committed, w, w_committed, state,
+                      damaged, largest_opening);
   }
 
   void
   JointSolver::load(std::istream &in)
   {
-    binary::read_all(in, force, force_committed, w, w_committed, state, damaged,
-                     largest_opening);
+    binary::read_all(in, force, force_committed, pair_load, load_committed, w, w_committed, state,
+                     damaged, largest_opening);
     if (state.size() != pairs.size() || force.size() != dim * pairs.size())
       throw InputError("Checkpoint: the saved joint state has " + std::to_string(state.size()) +
                        " node pairs, the model " + std::to_string(pairs.size()) + ".");

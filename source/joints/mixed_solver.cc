@@ -141,14 +141,21 @@ namespace archdam::joints
   }
 
   void
-  MixedJointSolver::set_relative_displacement()
+  MixedJointSolver::add_flexibility_times(const double factor, const std::vector<double> &f,
+                                          std::vector<double> &out) const
   {
     const unsigned int m = dim * pairs.size();
-    w                    = s;
     for (unsigned int j = 0; j < m; ++j)
-      if (force[j] != 0.)
+      if (f[j] != 0.)
         for (unsigned int k = 0; k < m; ++k)
-          w[k] -= h * C[static_cast<std::size_t>(j) * m + k] * force[j];
+          out[k] += factor * C[static_cast<std::size_t>(j) * m + k] * f[j];
+  }
+
+  void
+  MixedJointSolver::set_relative_displacement()
+  {
+    w = s;
+    add_flexibility_times(-contact_h(), force, w);
   }
 
   void
@@ -192,7 +199,7 @@ namespace archdam::joints
       factor.reinit(n, n);
     const auto flexibility = [&](const unsigned int b, const unsigned int l,
                                  const unsigned int i, const unsigned int k) {
-      return h * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+      return contact_h() * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
     };
     for (unsigned int a = 0; a < closed.size(); ++a)
       {
@@ -212,7 +219,7 @@ namespace archdam::joints
                 // that the LU's pivoting sees rows of one scale.
                 if (!same)
                   {
-                    // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - w_committed,t
+                    // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - target_t
                     if (kappa > 0.)
                       for (unsigned int b = 0; b < closed.size(); ++b)
                         for (unsigned int l = 0; l < dim; ++l)
@@ -225,7 +232,7 @@ namespace archdam::joints
                   }
                 f(row) = strength_i.cohesion_force * d[k] / r;
                 for (const unsigned int l : {1u, 2u})
-                  f(row) += kappa * P(k, l) * (s[dim * i + l] - w_committed[dim * i + l]);
+                  f(row) += kappa * P(k, l) * (s[dim * i + l] - target[dim * i + l]);
                 continue;
               }
             // (h C f)_ik = s_ik - w_target,k
@@ -233,7 +240,7 @@ namespace archdam::joints
               for (unsigned int b = 0; b < closed.size(); ++b)
                 for (unsigned int l = 0; l < dim; ++l)
                   factor(row, dim * b + l) = flexibility(b, l, i, k);
-            f(row) = s[dim * i + k] - (k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k]);
+            f(row) = s[dim * i + k] - target[dim * i + k];
           }
       }
     if (!same)
@@ -304,7 +311,7 @@ namespace archdam::joints
       force[j] += df;
       const double *column = &C[static_cast<std::size_t>(j) * m];
       for (unsigned int k = 0; k < m; ++k)
-        w[k] -= h * column[k] * df;
+        w[k] -= contact_h() * column[k] * df;
     };
     std::vector<double> before, previous_states, tried_states, pgs_force, pgs_w, pgs_opening;
     std::vector<bool>   pgs_damage;
@@ -316,11 +323,11 @@ namespace archdam::joints
         for (unsigned int i = 0; i < pairs.size(); ++i)
           {
             const auto entry = [&](const unsigned int k, const unsigned int l) {
-              return h * C[static_cast<std::size_t>(dim * i + l) * m + dim * i + k];
+              return contact_h() * C[static_cast<std::size_t>(dim * i + l) * m + dim * i + k];
             };
             // normal: f_xi <= min(sigma_t A, c A / mu), else the pair opens
             auto   strength_i = strength(i);
-            double f_xi       = force[dim * i] + gap(i) / entry(0, 0);
+            double f_xi       = force[dim * i] + approach(i) / entry(0, 0);
             if (f_xi > strength_i.normal_limit())
               {
                 damaged[i] = true;
@@ -333,8 +340,8 @@ namespace archdam::joints
             const double a = entry(1, 1), b = entry(1, 2), d = entry(2, 2);
             const double lambda =
               0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
-            double q1 = force[dim * i + 1] + (w[dim * i + 1] - w_committed[dim * i + 1]) / lambda;
-            double q2 = force[dim * i + 2] + (w[dim * i + 2] - w_committed[dim * i + 2]) / lambda;
+            double q1 = force[dim * i + 1] + (w[dim * i + 1] - target[dim * i + 1]) / lambda;
+            double q2 = force[dim * i + 2] + (w[dim * i + 2] - target[dim * i + 2]) / lambda;
             double capacity = std::max(0., strength_i.shear_capacity(force[dim * i]));
             double q        = std::hypot(q1, q2);
             if (q > capacity && !damaged[i])
@@ -420,7 +427,7 @@ namespace archdam::joints
                                  p.coupling == Coupling::neighbouring_joints);
         build_time =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        augmentation = augmentation_of(C, h);
+        augmentation = augmentation_of(C, contact_h());
       }
 
     const auto *condensed = A_factor.condensed();
@@ -438,29 +445,32 @@ namespace archdam::joints
               bz += v * interface_x[g];
             s[j] = w_base[j] + h * bz;
           }
+        // the step impulse's load g = omega f - (omega - 1) g_n (§10):
+        // s gains (omega - 1) h C g_n
+        if (omega != 1.)
+          add_flexibility_times((omega - 1.) * h, load_committed, s);
         force = force_committed;
         set_relative_displacement();
       }
     else
       {
-        // 1. predictor: the pair forces held at their committed values.
+        // 1. predictor: the pair loads held at their committed values.
         rhs = r;
-        pairs.add_transpose(force_committed, -1., rhs);
+        pairs.add_transpose(load_committed, -1., rhs);
         A_factor.solve(x, rhs);
         pairs.relative_displacement(x, w);
         for (unsigned int j = 0; j < m; ++j)
           w[j] = w_base[j] + h * w[j];
-        force = force_committed;
 
-        // 2. the contact problem on the pairs: w = s - h C f with s = w + h C f_n
-        //    the relative displacement at zero pair forces.
+        // 2. the contact problem on the pairs: w = s - omega h C f with
+        //    s = w + omega h C g_n (the relative displacement at zero pair
+        //    forces when omega = 1).
         s = w;
-        for (unsigned int j = 0; j < m; ++j)
-          if (force_committed[j] != 0.)
-            for (unsigned int k = 0; k < m; ++k)
-              s[k] += h * C[static_cast<std::size_t>(j) * m + k] * force_committed[j];
+        add_flexibility_times(contact_h(), load_committed, s);
+        force = force_committed;
+        set_relative_displacement();
       }
-    start_directions();
+    start_solve();
 
     // The active-set iteration first (exact and fast when the states settle);
     // if it does not, projected Gauss-Seidel from the committed forces, which
@@ -476,23 +486,24 @@ namespace archdam::joints
         state           = states_at_start;
         projected_gauss_seidel(step);
       }
+    set_load();
 
     if (condensed)
       {
-        // 3. backward substitution from x_Γ = z - G f.
-        dealii::Vector<double> f(force.begin(), force.end()), Gf(interface_x.size());
+        // 3. backward substitution from x_Γ = z - G g.
+        dealii::Vector<double> f(pair_load.begin(), pair_load.end()), Gf(interface_x.size());
         G.vmult(Gf, f);
         interface_x -= Gf;
         condensed->expand(interface_x, x);
         return step;
       }
 
-    // 3. corrector: x += A^{-1} (-B^T (f - f_n)).
+    // 3. corrector: x += A^{-1} (-B^T (g - g_n)).
     std::vector<double> df(m);
     bool                changed = false;
     for (unsigned int j = 0; j < m; ++j)
       {
-        df[j]   = force[j] - force_committed[j];
+        df[j]   = pair_load[j] - load_committed[j];
         changed = changed || df[j] != 0.;
       }
     if (changed)

@@ -58,7 +58,7 @@ namespace archdam::joints
     const unsigned int n = pairs.size();
     if (augmentation.empty())
       augmentation = augmentation_of(flexibility_matrix(pairs, A_factor, r, 64, false), h);
-    start_directions();
+    start_solve();
     force = force_committed;
     Vector rhs;
     rhs.reinit(r);
@@ -83,8 +83,7 @@ namespace archdam::joints
             const unsigned int n_constrained = state[i] == PairState::stick ? dim : 1;
             for (unsigned int k = 0; k < n_constrained; ++k)
               {
-                const double target =
-                  k == 0 ? -laws[i].initial_gap : w_committed[dim * i + k];
+                const double w_target = target[dim * i + k];
                 const auto b = pairs[i].B_row(k);
                 for (const auto &[row, v_row] : b)
                   if (owned.is_element(row))
@@ -96,7 +95,7 @@ namespace archdam::joints
                           petsc_check(MatSetValues(matrix, 1, &ir, 1, &ic, &value, ADD_VALUES));
                         }
                       rhs_index.push_back(row);
-                      rhs_value.push_back(-kappa * (w_base[dim * i + k] - target) * v_row);
+                      rhs_value.push_back(-kappa * (w_base[dim * i + k] - w_target) * v_row);
                     }
               }
             if (state[i] == PairState::slip)
@@ -147,10 +146,10 @@ namespace archdam::joints
               std::fill(f, f + dim, 0.);
             else
               {
-                f[0] = kappa * (w[dim * i] + laws[i].initial_gap);
+                f[0] = kappa * closure(i);
                 if (state[i] == PairState::stick)
                   for (const unsigned int k : {1u, 2u})
-                    f[k] = kappa * (w[dim * i + k] - w_committed[dim * i + k]);
+                    f[k] = kappa * (w[dim * i + k] - target[dim * i + k]);
                 else
                   for (const unsigned int k : {1u, 2u})
                     f[k] = strength(i).shear_capacity(f[0]) * direction[i][k];
@@ -165,6 +164,7 @@ namespace archdam::joints
             break;
           }
       }
+    set_load();
     return step;
   }
 } // namespace archdam::joints

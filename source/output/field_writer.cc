@@ -87,11 +87,11 @@ namespace archdam::output
   FieldWriter::record(const StepRecord &s)
   {
     if (p.field_interval > 0 && s.state.step % p.field_interval == 0)
-      write(s.state);
+      write(s.state, s.acceleration);
   }
 
   void
-  FieldWriter::write(const time::NewmarkState &s)
+  FieldWriter::write(const time::NewmarkState &s, const Vector *acceleration)
   {
     const auto names = [](const std::string &u, const std::string &pr) {
       std::vector<std::string> n(dim, u);
@@ -103,7 +103,8 @@ namespace archdam::output
     interp.push_back(DataComponentInterpretation::component_is_scalar);
 
     Vector u, v, a;
-    for (auto [ghosted, owned] : {std::pair{&u, &s.u}, {&v, &s.v}, {&a, &s.a}})
+    for (auto [ghosted, owned] :
+         {std::pair{&u, &s.u}, {&v, &s.v}, {&a, acceleration ? acceleration : &s.a}})
       {
         space.reinit_ghosted(*ghosted);
         *ghosted = *owned;

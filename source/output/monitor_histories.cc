@@ -15,7 +15,7 @@ namespace archdam::output
   void
   MonitorHistories::record(const StepRecord &s)
   {
-    table.append(monitors.evaluate(s.state));
+    table.append(monitors.evaluate(s.state, s.acceleration));
   }
 
   void

@@ -161,7 +161,7 @@ namespace archdam::output
   }
 
   std::vector<double>
-  Monitors::evaluate(const time::NewmarkState &s) const
+  Monitors::evaluate(const time::NewmarkState &s, const Vector *acceleration) const
   {
     std::vector<double> row{s.time};
     for (unsigned int k = 0; k < points.size(); ++k)
@@ -178,7 +178,7 @@ namespace archdam::output
         if (record_v)
           push3(gather(s.v, weights[k]));
         if (record_a)
-          push3(gather(s.a, weights[k]));
+          push3(gather(acceleration ? *acceleration : s.a, weights[k]));
         if (record_stress)
           {
             Tensor<2, dim> grad;

@@ -229,6 +229,9 @@ namespace archdam::analysis
     Vector                                   u_static;
     std::unique_ptr<physics::reservoir::CoupledSystem>           coupled;
     time::NewmarkState                       current;
+    /// With the joints' step impulse: v at the start of the step and the
+    /// step's mean acceleration, which the outputs show (output::StepRecord).
+    Vector                                   v_before, mean_acceleration;
     NaturalModes                             modes;
     /// The dynamic stage's results (make_recorders()).
     std::vector<std::unique_ptr<output::Recorder>> recorders;

@@ -109,6 +109,23 @@ namespace archdam::joints
     return names;
   }
 
+  /// `Contraction joints/Contact in time`: how the dynamic step's pair forces
+  /// act in time (doc/theory/joints.md §10).
+  enum class ContactInTime
+  {
+    trapezoidal, ///< the forces at the step's ends, averaged by the Newmark rule; positions held
+    step_impulse ///< one force over the whole step; closed pairs hold their relative velocity
+  };
+
+  /// The names of ContactInTime in the case file.
+  inline const SelectionNames<ContactInTime> &
+  contact_in_time_names()
+  {
+    static const SelectionNames<ContactInTime> names{
+      {"trapezoidal", ContactInTime::trapezoidal}, {"step impulse", ContactInTime::step_impulse}};
+    return names;
+  }
+
   /// The values of the law of one joint (doc/theory/joints.md §2, the
   /// paper's Table 1). Stresses in Pa, lengths in m.
   struct LawParameters
@@ -132,6 +149,7 @@ namespace archdam::joints
     Coupling    coupling     = Coupling::all_joints;
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     Law           strength_law = Law::mohr_coulomb;
+    ContactInTime contact_in_time = ContactInTime::trapezoidal;
     LawParameters law;
     /// "k: name = value, ...; ..." overrides of the law for single joints
     std::string per_joint;

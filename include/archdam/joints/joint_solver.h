@@ -8,7 +8,9 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <algorithm>
 #include <iosfwd>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,9 +67,24 @@ namespace archdam::joints
     std::string
     describe(const ContactStep &step) const;
 
+    /**
+     * Set up the dynamic step that @p newmark is about to solve with
+     * Contraction joints/Contact in time = step impulse
+     * (doc/theory/joints.md §10): the step's force f acts over the whole
+     * step, so the model is loaded with g = omega f - (omega - 1) g_n,
+     * omega = dt / (beta1 dt), and the closed pairs hold the relative
+     * velocity at the step's end at zero, w = B (u^p - beta2 dt / beta1 v^p).
+     * Nothing to do with the trapezoidal forces.
+     */
+    void
+    prepare_step(const time::NewmarkIntegrator &newmark);
+
     const NodePairs &pairs;
-    /// Pair values, 3 per pair in the local frame (xi, eta, zeta).
-    std::vector<double>    force, force_committed, w, w_committed;
+    /// Pair values, 3 per pair in the local frame (xi, eta, zeta): the
+    /// forces the law holds (what the joints carry), the forces the model is
+    /// loaded with (the same with the trapezoidal forces, §10) and the
+    /// relative displacements.
+    std::vector<double>    force, force_committed, pair_load, load_committed, w, w_committed;
     std::vector<PairState> state;
     /// The pairs' histories (PairHistory), only ever weakening them: the
     /// damage at once within a solve (so that the iteration cannot cycle
@@ -87,6 +104,39 @@ namespace archdam::joints
     slip(unsigned int i) const;
 
   protected:
+    /// The contact problem's h: h for the trapezoidal forces, omega h with
+    /// the step impulse (w = s - omega h C f).
+    double
+    contact_h() const
+    {
+      return omega * h;
+    }
+    /// w_xi - its target for a closed pair: the gap with the trapezoidal
+    /// forces, the change from the velocity target with the step impulse.
+    double
+    closure(unsigned int i) const
+    {
+      return w[dim * i] - target[dim * i];
+    }
+    /// How far an open pair is from having to close; negative: it must.
+    /// With the trapezoidal forces its gap; with the step impulse its
+    /// closure if it may close in this step (it touches at the start of the
+    /// solve, or was closed), else never (doc/theory/joints.md §10).
+    double
+    approach(unsigned int i) const
+    {
+      if (velocity_target.empty())
+        return gap(i);
+      return may_close[i] ? closure(i) : std::numeric_limits<double>::infinity();
+    }
+    /// The targets of the closed pairs for this solve (target), and the slip
+    /// directions from the committed tangential forces.
+    void
+    start_solve();
+    /// pair_load = omega force - (omega - 1) load_committed.
+    void
+    set_load();
+
     /// Pair i's strength from the joint law at its history.
     PairStrength
     strength(unsigned int i) const
@@ -127,9 +177,18 @@ namespace archdam::joints
     /// has just started to slip): the weight of the direction's own change
     /// in the semi-smooth Newton step of a slipping pair (MixedJointSolver).
     std::vector<double> slip_ratio;
-    /// Slip directions from the committed tangential forces.
-    void
-    start_directions();
+    /// The load weight omega (1: trapezoidal forces) and the step's velocity
+    /// targets B (u^p - beta2 dt / beta1 v^p) (empty: trapezoidal forces).
+    double              omega = 1.;
+    std::vector<double> velocity_target;
+    /// What a closed pair holds in this solve, 3 per pair: w_xi = target_xi
+    /// (-delta_0 with the trapezoidal forces), and, sticking, w_t = target_t
+    /// (its committed value); a slipping pair slips along w_t - target_t.
+    std::vector<double> target;
+    /// With the step impulse, the pairs that may be closed in this solve: closed
+    /// at the start of the step or touching at the committed forces (fixed for
+    /// the solve, so that the contact problem keeps one index set).
+    std::vector<bool> may_close;
 
     const JointParameters     &p;
     const double               h;
@@ -183,7 +242,11 @@ namespace archdam::joints
     static constexpr unsigned int active_set_limit = 30, active_set_polish = 10,
                                   polish_after = 5;
 
-    /// w = s - h C f.
+    /// @p out += @p factor C @p f.
+    void
+    add_flexibility_times(double factor, const std::vector<double> &f,
+                          std::vector<double> &out) const;
+    /// w = s - omega h C f.
     void
     set_relative_displacement();
     /// The forces from the law with the states and slip directions fixed

@@ -56,9 +56,10 @@ namespace archdam::output
     FieldWriter(const OutputParameters &p, const fe::FESpace &space,
                 const physics::solid::MaterialParameters &materials);
 
-    /// Write the fields of @p s (its time labels the output).
+    /// Write the fields of @p s (its time labels the output), with
+    /// @p acceleration in place of s.a if given (StepRecord::acceleration).
     void
-    write(const time::NewmarkState &s);
+    write(const time::NewmarkState &s, const Vector *acceleration = nullptr);
 
     std::string
     name() const override

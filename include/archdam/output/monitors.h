@@ -51,8 +51,10 @@ namespace archdam::output
       return names;
     }
 
+    /// One row: the time, then each point's values of @p state, with
+    /// @p acceleration in place of state.a if given (StepRecord::acceleration).
     std::vector<double>
-    evaluate(const time::NewmarkState &state) const;
+    evaluate(const time::NewmarkState &state, const Vector *acceleration = nullptr) const;
 
     /// Displacement vector at point @p k for the nodal vector @p u.
     dealii::Tensor<1, dim>

@@ -26,6 +26,17 @@ namespace archdam::output
     /// The ground acceleration of the relative formulation at this time
     /// (zero with a massed foundation, whose input enters at its boundary).
     dealii::Tensor<1, dim> ground_acceleration;
+    /// The acceleration the outputs show when it is not state.a: with the
+    /// joints' step impulse, the step's mean acceleration (v_{n+1} - v_n) / dt
+    /// (doc/theory/joints.md §10: state.a carries the load's oscillation).
+    const Vector *acceleration = nullptr;
+
+    /// The acceleration the outputs show.
+    const Vector &
+    shown_acceleration() const
+    {
+      return acceleration ? *acceleration : state.a;
+    }
   };
 
   /**

@@ -153,6 +153,18 @@ namespace archdam::time
     {
       return up;
     }
+    /// The step's velocity predictor v^p = v_n + dt a_n.
+    const Vector &
+    predicted_velocity() const
+    {
+      return vp;
+    }
+    /// beta1 dt: the velocity per unit acceleration increment.
+    double
+    velocity_factor() const
+    {
+      return p.beta1 * dt;
+    }
     /// beta2 dt^2: the displacement per unit acceleration increment.
     double
     displacement_factor() const
