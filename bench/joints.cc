@@ -85,6 +85,7 @@ namespace
                                    "")
         << "end\n"
         << "subsection Analysis\n set Stages = dynamic\nend\n"
+        << "subsection Static loads\n set Gravity = false\nend\n" // from rest, unloaded
         << "subsection Time integration\n set Time step = 0.01\n set End time = "
         << 0.01 * steps << "\nend\n"
         << "subsection Ground motion\n subsection Component x\n  set File = "
