@@ -110,6 +110,8 @@ namespace archdam::analysis
   Simulation::write_checkpoint()
   {
     TimerOutput::Scope t(timer, "dynamic: checkpoints");
+    if (joint_solver) // a resumed run starts its contact factorization here too
+      joint_solver->forget_factorization();
     std::ostringstream out;
     binary::write(out, partition_signature(model().space()));
     save_step_state(out);

@@ -54,6 +54,35 @@ namespace archdam::analysis
     return std::make_unique<EnergyBalance>(operators);
   }
 
+  std::unique_ptr<time::NewmarkIntegrator>
+  Simulation::make_integrator()
+  {
+    const auto rayleigh = p.damping.rayleigh_coefficients();
+    const double dt     = p.time_integration.time_step;
+    if (model().fluid())
+      {
+        // The coupled dam-water system, symmetric indefinite (paper eq. 3.2).
+        coupled = std::make_unique<physics::reservoir::CoupledSystem>();
+        physics::reservoir::form_coupled_system(*model().fluid(), p.reservoir.density,
+                                                p.time_integration.beta2, dt, model().mass(),
+                                                model().stiffness(), rayleigh, *coupled);
+        // A prescribed outer boundary drives the water too (doc/theory/foundation.md §7).
+        if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
+          physics::reservoir::form_coupled_columns(model().space(), model().interface_pairs(),
+                                                   p.reservoir.density,
+                                                   p.time_integration.beta2, dt, rayleigh,
+                                                   *boundary);
+        return std::make_unique<time::NewmarkIntegrator>(
+          p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
+          model().space().constraints, false, foundation() ? foundation()->dashpots() : nullptr,
+          condensed_interface());
+      }
+    return std::make_unique<time::NewmarkIntegrator>(
+      p.time_integration, model().mass(), model().stiffness(), rayleigh,
+      model().space().constraints, foundation() ? foundation()->dashpots() : nullptr,
+      condensed_interface());
+  }
+
   void
   Simulation::make_recorders()
   {
@@ -141,38 +170,16 @@ namespace archdam::analysis
     check_motion_duration(n_steps * dt);
 
     const auto rayleigh = p.damping.rayleigh_coefficients();
-    std::unique_ptr<time::NewmarkIntegrator> newmark;
     screen << "Dynamic stage: factorizing the effective matrix (" << model().space().dof_handler.n_dofs()
            << " DOFs)" << std::endl;
     {
       TimerOutput::Scope t(timer, "dynamic: factorization");
-      if (model().fluid())
-        {
-          // The coupled dam-water system, symmetric indefinite (paper eq. 3.2).
-          coupled = std::make_unique<physics::reservoir::CoupledSystem>();
-          physics::reservoir::form_coupled_system(*model().fluid(), p.reservoir.density,
-                                                  p.time_integration.beta2, dt, model().mass(),
-                                                  model().stiffness(), rayleigh, *coupled);
-          // A prescribed outer boundary drives the water too (doc/theory/foundation.md §7).
-          if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
-            physics::reservoir::form_coupled_columns(model().space(), model().interface_pairs(),
-                                                     p.reservoir.density,
-                                                     p.time_integration.beta2, dt, rayleigh,
-                                                     *boundary);
-          newmark = std::make_unique<time::NewmarkIntegrator>(
-            p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
-            model().space().constraints, false,
-            foundation() ? foundation()->dashpots() : nullptr, condensed_interface());
-        }
-      else
-        newmark = std::make_unique<time::NewmarkIntegrator>(
-          p.time_integration, model().mass(), model().stiffness(), rayleigh, model().space().constraints,
-          foundation() ? foundation()->dashpots() : nullptr, condensed_interface());
+      integrator = make_integrator();
     }
-    screen << "  factors: " << std::setprecision(4) << newmark->effective_factor().factor_entries()
+    screen << "  factors: " << std::setprecision(4) << integrator->effective_factor().factor_entries()
            << " entries" << std::endl;
     if (model().joint_pairs())
-      start_dynamic_joints(*newmark);
+      start_dynamic_joints(*integrator);
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
@@ -222,13 +229,19 @@ namespace archdam::analysis
           if (step_impulse)
             v_before = current.v;
           joints::ContactStep contact;
-          const auto          solve =
-            joint_solver ? joints::contact_step_solver(*newmark, *joint_solver, contact)
-                                   : time::NewmarkIntegrator::StepSolver();
+          time::NewmarkIntegrator::StepSolver solve;
+          if (joint_solver)
+            solve = [&, joint_step = joints::contact_step_solver(*integrator, *joint_solver,
+                                                                 contact)](const Vector &rhs,
+                                                                           Vector       &da) {
+              step_solve.start();
+              joint_step(rhs, da);
+              step_solve.stop();
+            };
           if (foundation())
-            foundation()->advance(*newmark, load, current, solve);
+            foundation()->advance(*integrator, load, current, solve);
           else
-            newmark->advance(load, current, solve);
+            integrator->advance(load, current, solve);
           if (joint_solver)
             check_contact_step(contact, n * dt);
           if (step_impulse)
@@ -333,7 +346,47 @@ namespace archdam::analysis
                     static_cast<double>(contact_iterations) / std::max(current.step, 1u));
         summary.set("dynamic/contact iterations per step/maximum", max_contact_iterations);
         if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
-          summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
+          {
+            summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
+            summary.set("dynamic/contact problem/factorizations", mixed->factorizations);
+            summary.set("dynamic/contact problem/updated solves", mixed->updated_solves);
+          }
       }
+    summarize_step_costs(steps_run);
+  }
+
+  void
+  Simulation::summarize_step_costs(const double steps_run)
+  {
+    // Where a step's time goes (doc/performance.md §7): the factorization's
+    // size, and per step the parts of the solve, the recorders, the rest.
+    const auto *condensed = integrator ? integrator->effective_factor().condensed() : nullptr;
+    if (!condensed)
+      return;
+    const std::string s     = "dynamic/factorization/";
+    const auto       &stats = condensed->statistics();
+    summary.set(s + "factor entries", stats.entries);
+    summary.set(s + "operations", stats.operations);
+    summary.set(s + "memory [MB]", 1e-6 * stats.memory);
+    const auto  times = condensed->solve_times();
+    const auto  wall  = timer.get_summary_data(TimerOutput::total_wall_time);
+    const auto  per_step = [&](const std::string &section) {
+      const auto it = wall.find(section);
+      return it == wall.end() ? 0. : it->second / steps_run;
+    };
+    const std::string t = "dynamic/time per step [s]/";
+    summary.set(t + "forward elimination", times.elimination / steps_run);
+    summary.set(t + "backward substitution", times.substitution / steps_run);
+    if (joint_solver)
+      summary.set(t + "contact problem",
+                  (step_solve.wall_time() - times.elimination - times.substitution) /
+                    steps_run);
+    double recorded = 0.;
+    for (const auto &r : recorders)
+      recorded += per_step("dynamic: " + r->name());
+    summary.set(t + "energy balance", per_step("dynamic: energy balance"));
+    summary.set(t + "other recorders", recorded - per_step("dynamic: energy balance"));
+    summary.set(t + "last good step kept", per_step("dynamic: last good step kept"));
+    summary.set(t + "step", per_step("dynamic: steps"));
   }
 } // namespace archdam::analysis

@@ -21,7 +21,9 @@ namespace archdam::analysis
     // an input error unwinds the stack; statistics over ranks are gathered
     // explicitly at the end.
     , timer(screen, TimerOutput::never, TimerOutput::wall_times)
-  {}
+  {
+    step_solve.reset(); // (a deal.II timer starts when made)
+  }
 
   void
   Simulation::run(const bool resume)

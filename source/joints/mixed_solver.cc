@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <numeric>
 #include <chrono>
 #include <cmath>
 
@@ -162,102 +163,185 @@ namespace archdam::joints
   MixedJointSolver::solve_with_fixed_states()
   {
     // The law with the states fixed and the slip directions linearized is
-    // linear in the forces of the closed pairs (doc/theory/joints.md §6): stick:
-    // w = w_target in all three directions; slip: w_xi = -delta_0 and the
+    // linear in the pair forces (doc/theory/joints.md §6): stick: w =
+    // w_target in all three directions; slip: w_xi = -delta_0 and the
     // semi-smooth Newton step of f_t = tau(f_xi) q / |q|, q = f_t + r dw_t
     // (Alart-Curnier; Hueber, Stadler and Wohlmuth 2008): about the last
     // iterate, with d = q / |q|, P = I - d d^T (tangent plane) and
     // kappa = tau / |q|,
-    //   (I - kappa P) f_t - kappa r P dw_t(f) + mu d f_xi = c A d.
-    // With kappa = 0 (a pair that has just started to slip) this is the
-    // fixed-direction law f_t = (c A - mu f_xi) d; with kappa > 0 the
-    // direction converges with the forces instead of by a damped
-    // fixed-point iteration, which needed hundreds of iterations when the
-    // slip increment is small against tau / r.
-    const unsigned int        m = dim * pairs.size();
-    std::vector<unsigned int> closed;
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (state[i] != PairState::separation)
-        closed.push_back(i);
-    const unsigned int     n = dim * closed.size();
-    dealii::Vector<double> f(n);
-    // The matrix depends only on the states and the slip directions: its LU
-    // is kept and reused while they stay the same (most steps of a dynamic
-    // run, once the joints have settled). They are recorded once the
-    // matrix is rebuilt and factorized, also with every pair open (n = 0):
-    // the pairs that close again then get their matrix anew.
-    const bool same = state == factor_states &&
-                      [&] {
-                        for (unsigned int i = 0; i < pairs.size(); ++i)
-                          if (state[i] == PairState::slip &&
-                              (direction[i] != factor_directions[i] ||
-                               slip_ratio[i] != factor_ratios[i]))
-                            return false;
-                        return true;
-                      }();
-    if (!same)
-      factor.reinit(n, n);
-    const auto flexibility = [&](const unsigned int b, const unsigned int l,
-                                 const unsigned int i, const unsigned int k) {
-      return contact_h() * C[static_cast<std::size_t>(dim * closed[b] + l) * m + dim * i + k];
+    //   (I - kappa P) f_t - kappa r P dw_t(f) + mu d f_xi = c A d;
+    // separation: f = 0. With kappa = 0 (a pair that has just started to
+    // slip) this is the fixed-direction law f_t = (c A - mu f_xi) d; with
+    // kappa > 0 the direction converges with the forces instead of by a
+    // damped fixed-point iteration, which needed hundreds of iterations when
+    // the slip increment is small against tau / r.
+    //
+    // One row per pair unknown (3 n_pairs, the open pairs' rows f = 0), so
+    // that a change of a few pairs' states or slip directions changes a few
+    // rows: the LU of the system as it was at its last factorization (the
+    // base A0) is kept, and the rows R that changed since are taken in by
+    // the Sherman-Morrison-Woodbury formula (doc/theory/joints.md §6):
+    //   A = A0 + E_R dR,  Z = A0^{-1} E_R (kept per row while A0 is),
+    //   x = y - Z T^{-1} t,  y = A0^{-1} b,  T = I + dR Z = A_R Z,
+    //   t = dR y = A_R y - b_R
+    // (A_R the new rows; A0_R Z = I and A0_R y = b_R). A0 is refactorized
+    // when R grows beyond max_update_rows.
+    const unsigned int m = dim * pairs.size();
+    if (m == 0)
+      return;
+    const auto flexibility = [&](const unsigned int j, const unsigned int row) {
+      return contact_h() * C[static_cast<std::size_t>(j) * m + row];
     };
-    for (unsigned int a = 0; a < closed.size(); ++a)
+    // Row dim i + k of the system and its right-hand side, from the pair's
+    // current state.
+    const auto system_row = [&](const unsigned int i, const unsigned int k, double *row) {
+      const unsigned int r_ik = dim * i + k;
+      std::fill(row, row + m, 0.);
+      if (state[i] == PairState::separation)
+        {
+          // f = 0, scaled like the flexibility rows (metres) for the pivoting
+          row[r_ik] = flexibility(r_ik, r_ik);
+          return 0.;
+        }
+      if (k > 0 && state[i] == PairState::slip)
+        {
+          const auto   strength_i = strength(i);
+          const double kappa      = slip_ratio[i], r = augmentation[i];
+          const auto  &d          = direction[i];
+          const auto   P          = [&](const unsigned int k1, const unsigned int k2) {
+            return (k1 == k2 ? 1. : 0.) - d[k1] * d[k2];
+          };
+          // The row divided by r: in metres like the other rows, so that
+          // the LU's pivoting sees rows of one scale.
+          // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - target_t
+          if (kappa > 0.)
+            for (unsigned int j = 0; j < m; ++j)
+              row[j] = kappa * (P(k, 1) * flexibility(j, dim * i + 1) +
+                                P(k, 2) * flexibility(j, dim * i + 2));
+          for (const unsigned int l : {1u, 2u})
+            row[dim * i + l] += ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
+          row[dim * i] += strength_i.friction * d[k] / r;
+          double b = strength_i.cohesion_force * d[k] / r;
+          for (const unsigned int l : {1u, 2u})
+            b += kappa * P(k, l) * (s[dim * i + l] - target[dim * i + l]);
+          return b;
+        }
+      // (h C f)_ik = s_ik - w_target,k
+      for (unsigned int j = 0; j < m; ++j)
+        row[j] = flexibility(j, r_ik);
+      return s[r_ik] - target[r_ik];
+    };
+    // What a pair's rows depend on besides C, h and r.
+    const auto rows_of = [&](const unsigned int i) {
+      RowsOfPair rows{state[i], {}, 0., 0.};
+      if (state[i] == PairState::slip)
+        {
+          rows.direction = direction[i];
+          rows.kappa     = slip_ratio[i];
+          rows.friction  = strength(i).friction;
+        }
+      return rows;
+    };
+
+    // The rows that changed, ascending: the normal row is the flexibility
+    // row in stick and slip alike, and changes only with a separation.
+    std::vector<unsigned int> changed;
+    if (base_rows.size() == pairs.size())
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        if (!(rows_of(i) == base_rows[i]))
+          for (unsigned int k = 0; k < dim; ++k)
+            if (k > 0 || (state[i] == PairState::separation) !=
+                           (base_rows[i].state == PairState::separation))
+              changed.push_back(dim * i + k);
+    if (base_rows.size() != pairs.size() || changed.size() > max_update_rows(m))
       {
-        const unsigned int i = closed[a];
-        for (unsigned int k = 0; k < dim; ++k)
+        base.reinit(m, m);
+        std::vector<double> row(m);
+        base_rows.resize(pairs.size());
+        for (unsigned int i = 0; i < pairs.size(); ++i)
           {
-            const unsigned int row = dim * a + k;
-            if (k > 0 && state[i] == PairState::slip)
+            for (unsigned int k = 0; k < dim; ++k)
               {
-                const auto     strength_i = strength(i);
-                const double   kappa      = slip_ratio[i], r = augmentation[i];
-                const auto    &d          = direction[i];
-                const auto     P          = [&](const unsigned int k1, const unsigned int k2) {
-                  return (k1 == k2 ? 1. : 0.) - d[k1] * d[k2];
-                };
-                // The row divided by r: in metres like the other rows, so
-                // that the LU's pivoting sees rows of one scale.
-                if (!same)
-                  {
-                    // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - target_t
-                    if (kappa > 0.)
-                      for (unsigned int b = 0; b < closed.size(); ++b)
-                        for (unsigned int l = 0; l < dim; ++l)
-                          factor(row, dim * b + l) =
-                            kappa *
-                            (P(k, 1) * flexibility(b, l, i, 1) + P(k, 2) * flexibility(b, l, i, 2));
-                    for (const unsigned int l : {1u, 2u})
-                      factor(row, dim * a + l) += ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
-                    factor(row, dim * a) += strength_i.friction * d[k] / r;
-                  }
-                f(row) = strength_i.cohesion_force * d[k] / r;
-                for (const unsigned int l : {1u, 2u})
-                  f(row) += kappa * P(k, l) * (s[dim * i + l] - target[dim * i + l]);
-                continue;
+                system_row(i, k, row.data());
+                for (unsigned int j = 0; j < m; ++j)
+                  base(dim * i + k, j) = row[j];
               }
-            // (h C f)_ik = s_ik - w_target,k
-            if (!same)
-              for (unsigned int b = 0; b < closed.size(); ++b)
-                for (unsigned int l = 0; l < dim; ++l)
-                  factor(row, dim * b + l) = flexibility(b, l, i, k);
-            f(row) = s[dim * i + k] - target[dim * i + k];
+            base_rows[i] = rows_of(i);
           }
+        base.compute_lu_factorization();
+        ++factorizations;
+        update_columns.assign(m, {});
+        changed.clear();
       }
-    if (!same)
-      {
-        if (n > 0)
-          factor.compute_lu_factorization();
-        factor_states     = state;
-        factor_directions = direction;
-        factor_ratios     = slip_ratio;
-      }
-    if (n > 0)
-      factor.solve(f);
-    std::fill(force.begin(), force.end(), 0.);
-    for (unsigned int a = 0; a < closed.size(); ++a)
+
+    const unsigned int     n_changed = changed.size();
+    dealii::Vector<double> b(m);
+    std::vector<double>    rows(static_cast<std::size_t>(n_changed) * m), row(m);
+    for (unsigned int i = 0, a = 0; i < pairs.size(); ++i)
       for (unsigned int k = 0; k < dim; ++k)
-        force[dim * closed[a] + k] = f(dim * a + k);
+        {
+          const unsigned int r_ik = dim * i + k;
+          const bool         in_R = a < n_changed && changed[a] == r_ik;
+          b(r_ik) = system_row(i, k, in_R ? &rows[static_cast<std::size_t>(a++) * m] : row.data());
+        }
+    dealii::Vector<double> x(b);
+    base.solve(x); // y
+    if (n_changed > 0)
+      {
+        ++updated_solves;
+        // Z's missing columns, in one multi-column solve.
+        std::vector<unsigned int> missing;
+        for (const unsigned int j : changed)
+          if (update_columns[j].size() == 0)
+            missing.push_back(j);
+        if (!missing.empty())
+          {
+            dealii::LAPACKFullMatrix<double> Z(m, missing.size());
+            for (unsigned int c = 0; c < missing.size(); ++c)
+              Z(missing[c], c) = 1.;
+            base.solve(Z);
+            for (unsigned int c = 0; c < missing.size(); ++c)
+              {
+                update_columns[missing[c]].reinit(m);
+                for (unsigned int j = 0; j < m; ++j)
+                  update_columns[missing[c]](j) = Z(j, c);
+              }
+          }
+        // T = A_R Z and t = A_R y - b_R as matrix products.
+        dealii::LAPACKFullMatrix<double> A_R(n_changed, m), Z(m, n_changed), T(n_changed, n_changed);
+        for (unsigned int a = 0; a < n_changed; ++a)
+          {
+            const double *A_a = &rows[static_cast<std::size_t>(a) * m];
+            const auto   &z   = update_columns[changed[a]];
+            for (unsigned int j = 0; j < m; ++j)
+              {
+                A_R(a, j) = A_a[j];
+                Z(j, a)   = z(j);
+              }
+          }
+        A_R.mmult(T, Z);
+        dealii::Vector<double> t(n_changed), correction(m);
+        A_R.vmult(t, x);
+        for (unsigned int a = 0; a < n_changed; ++a)
+          t(a) -= b(changed[a]);
+        T.compute_lu_factorization();
+        T.solve(t);
+        Z.vmult(correction, t);
+        x -= correction;
+      }
+    for (unsigned int j = 0; j < m; ++j)
+      force[j] = x(j);
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (state[i] == PairState::separation) // exactly 0, not round-off
+        std::fill(&force[dim * i], &force[dim * i] + dim, 0.);
     set_relative_displacement();
+  }
+
+  void
+  MixedJointSolver::forget_factorization()
+  {
+    base_rows.clear();
+    update_columns.clear();
   }
 
   bool

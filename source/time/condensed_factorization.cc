@@ -1,5 +1,6 @@
 #include <archdam/base/petsc_check.h>
 #include <archdam/time/condensed_factorization.h>
+#include <archdam/time/fill_reducing_order.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/exceptions.h>
@@ -59,7 +60,7 @@ namespace archdam::time
 
   CondensedFactorization::CondensedFactorization(
     const SparseMatrix &A, const bool positive_definite,
-    const std::vector<dealii::types::global_dof_index> &interface)
+    const std::vector<dealii::types::global_dof_index> &interface, const Ordering ordering)
     : mumps(std::make_unique<Mumps>())
     , gamma(interface)
   {
@@ -111,17 +112,42 @@ namespace archdam::time
     m.id.a_loc   = m.values.data();
 
     // The ordering: with a Schur complement MUMPS orders by AMD alone, which
-    // on these meshes gives 3-4 times the operations of PORD (what the plain
-    // factorization uses). So PORD orders the whole matrix first, and its
-    // order with the interface moved last is given to MUMPS.
-    m.icntl(7)  = 4; // PORD
-    m.icntl(19) = 0;
-    m.run(1, "ordering");
+    // on these meshes gives 3-4 times the operations of PORD. So the whole
+    // matrix is ordered first, by METIS's nested dissection (computed here:
+    // Debian's MUMPS has no METIS) or by PORD, and the order with the
+    // interface moved last is given to MUMPS.
+    std::vector<MUMPS_INT> by_position; // 1-based unknowns in elimination order
+    if (ordering == Ordering::pord)
+      {
+        m.icntl(7)  = 4; // PORD
+        m.icntl(19) = 0;
+        m.run(1, "ordering");
+        if (host)
+          {
+            by_position.resize(m.id.n);
+            for (MUMPS_INT i = 0; i < m.id.n; ++i)
+              by_position[m.id.sym_perm[i] - 1] = i + 1;
+          }
+      }
+    else
+      {
+        const auto rows = Utilities::MPI::gather(m.comm, m.irn, 0);
+        const auto cols = Utilities::MPI::gather(m.comm, m.jcn, 0);
+        if (host)
+          {
+            std::vector<MUMPS_INT> all_rows, all_cols;
+            for (unsigned int r = 0; r < rows.size(); ++r)
+              {
+                all_rows.insert(all_rows.end(), rows[r].begin(), rows[r].end());
+                all_cols.insert(all_cols.end(), cols[r].begin(), cols[r].end());
+              }
+            by_position = nested_dissection_order(m.id.n, all_rows, all_cols);
+            for (auto &i : by_position)
+              ++i;
+          }
+      }
     if (host)
       {
-        std::vector<MUMPS_INT> by_position(m.id.n);
-        for (MUMPS_INT i = 0; i < m.id.n; ++i)
-          by_position[m.id.sym_perm[i] - 1] = i + 1;
         std::vector<bool> on_interface(m.id.n, false);
         for (const auto g : gamma)
           on_interface[g] = true;
@@ -147,6 +173,17 @@ namespace archdam::time
     m.icntl(19) = 1; // the Schur complement centralized on rank 0
     m.run(1, "analysis");
     m.run(2, "factorization");
+    // The solves need the factors only: MUMPS's copy of the matrix goes.
+    m.id.irn_loc = m.id.jcn_loc = nullptr;
+    m.id.a_loc                  = nullptr;
+    std::vector<MUMPS_INT>().swap(m.irn);
+    std::vector<MUMPS_INT>().swap(m.jcn);
+    std::vector<double>().swap(m.values);
+    // INFOG(29) < 0 counts millions (MUMPS's convention for large factors).
+    const int entries = m.id.infog[28];
+    stats.entries     = entries < 0 ? -1e6 * entries : double(entries);
+    stats.operations  = m.id.rinfog[2];
+    stats.memory      = 1e6 * m.id.infog[21]; // INFOG(22): MB used, all processes
 
     // S on every rank: MUMPS returns the lower triangle by rows (for a
     // symmetric matrix; the rest of the array is workspace), completed by
@@ -168,6 +205,8 @@ namespace archdam::time
     m.id.schur = nullptr; // read by the factorization only
 
     m.reduced.resize(k);
+    elimination.reset(); // (a deal.II timer starts when made)
+    substitution.reset();
   }
 
   CondensedFactorization::~CondensedFactorization() = default;
@@ -207,7 +246,9 @@ namespace archdam::time
         m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
       }
     m.icntl(26) = 1; // condensation: forward elimination, reduced right-hand side
+    elimination.start();
     m.run(3, "condensation");
+    elimination.stop();
     const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
     y.reinit(reduced.size(), true);
     std::copy(reduced.begin(), reduced.end(), y.begin());
@@ -222,7 +263,9 @@ namespace archdam::time
     if (host)
       std::copy(x_gamma.begin(), x_gamma.end(), m.reduced.begin());
     m.icntl(26) = 2; // expansion: backward substitution from x_Γ
+    substitution.start();
     m.run(3, "expansion");
+    substitution.stop();
     if (host)
       {
         PetscScalar *a;
@@ -235,11 +278,9 @@ namespace archdam::time
     petsc_check(VecScatterEnd(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
   }
 
-  double
-  CondensedFactorization::factor_entries() const
+  CondensedFactorization::SolveTimes
+  CondensedFactorization::solve_times() const
   {
-    // INFOG(29) < 0 counts millions (MUMPS's convention for large factors).
-    const int n = mumps->id.infog[28];
-    return n < 0 ? -1e6 * n : double(n);
+    return {elimination.wall_time(), substitution.wall_time()};
   }
 } // namespace archdam::time

@@ -79,7 +79,7 @@ namespace archdam::time
   FactorizedOperator::factor_entries() const
   {
     if (condensed_factor)
-      return condensed_factor->factor_entries();
+      return condensed_factor->statistics().entries;
     if (ksp == nullptr)
       return 0.;
     PC  pc;

@@ -101,6 +101,11 @@ namespace archdam::analysis
     {
       return joint_solver.get();
     }
+    /// The dynamic stage's integrator with its factorized effective matrix,
+    /// as that stage makes it (the coupled system with water); for
+    /// benchmarks of the factorization.
+    std::unique_ptr<time::NewmarkIntegrator>
+    make_integrator();
 
   private:
     void
@@ -201,6 +206,10 @@ namespace archdam::analysis
     /// (@p n_run steps in @p wall_time seconds).
     void
     finish_dynamic_stage(double wall_time, unsigned int n_run);
+    /// The factorization's size and the time per step of its parts into the
+    /// summary (dynamic/factorization, dynamic/time per step).
+    void
+    summarize_step_costs(double steps_run);
     /// Node pairs, solver and the steps whose contact problem did not
     /// converge, into the summary.
     void
@@ -237,6 +246,11 @@ namespace archdam::analysis
     std::vector<std::unique_ptr<output::Recorder>> recorders;
     output::Summary                          summary;
     std::unique_ptr<joints::JointSolver>     joint_solver;
+    /// The dynamic stage's integrator (make_integrator()).
+    std::unique_ptr<time::NewmarkIntegrator> integrator;
+    /// Wall time of the steps' solves with the joints (the forward
+    /// elimination, the contact problem, the backward substitution).
+    dealii::Timer                            step_solve;
     /// Contact iterations per dynamic step: sum, maximum; flagged steps.
     unsigned long                            contact_iterations = 0;
     unsigned int                             max_contact_iterations = 0;

@@ -7,6 +7,7 @@
 #include <archdam/time/newmark.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
 #include <iosfwd>
@@ -62,6 +63,13 @@ namespace archdam::joints
     save(std::ostream &out) const;
     void
     load(std::istream &in);
+    /// The next solve() factorizes what it keeps between solves anew, as a
+    /// solver loaded from a checkpoint does: called when a checkpoint is
+    /// written, so that the run and one resumed from the checkpoint take
+    /// the same arithmetic.
+    virtual void
+    forget_factorization()
+    {}
 
     /// A message for a step that did not converge: joint, place, residual.
     std::string
@@ -226,6 +234,9 @@ namespace archdam::joints
     ContactStep
     solve(const Vector &r, const std::vector<double> &w_base, Vector &x) override;
 
+    void
+    forget_factorization() override;
+
     /// Dense C (3 n_pairs squared, column major).
     const std::vector<double> &
     flexibility() const
@@ -234,6 +245,9 @@ namespace archdam::joints
     }
     /// Wall time of building C [s].
     double build_time = 0.;
+    /// Fixed-state systems solved with a new LU of the whole system, and
+    /// with the kept LU updated by the rows that changed.
+    unsigned long factorizations = 0, updated_solves = 0;
 
   private:
     /// Active-set iterations before projected Gauss-Seidel takes over, and
@@ -250,7 +264,7 @@ namespace archdam::joints
     void
     set_relative_displacement();
     /// The forces from the law with the states and slip directions fixed
-    /// (one dense LU on the closed pairs), then w.
+    /// (the base's LU, updated by the rows that changed), then w.
     void
     solve_with_fixed_states();
     /// Up to @p limit active-set iterations; true if they converged.
@@ -275,12 +289,33 @@ namespace archdam::joints
     dealii::Vector<double>                                    interface_x;
     /// Relative displacement of the pairs at zero pair forces.
     std::vector<double> s;
-    /// LU of the last fixed-state system and the states and slip directions
-    /// it was built for (none before the first).
-    dealii::LAPACKFullMatrix<double>     factor;
-    std::vector<PairState>               factor_states;
-    std::vector<dealii::Tensor<1, dim>>  factor_directions;
-    std::vector<double>                  factor_ratios;
+    /// What a pair's rows of the fixed-state system depend on besides C, h
+    /// and its augmentation.
+    struct RowsOfPair
+    {
+      PairState              state;
+      dealii::Tensor<1, dim> direction;
+      double                 kappa, friction;
+      bool
+      operator==(const RowsOfPair &o) const
+      {
+        return state == o.state && direction == o.direction && kappa == o.kappa &&
+               friction == o.friction;
+      }
+    };
+    /// The fixed-state system's rows that may differ from the base before it
+    /// is factorized anew.
+    static unsigned int
+    max_update_rows(const unsigned int m)
+    {
+      return std::max(8u, m / 4);
+    }
+    /// The LU of the fixed-state system at its last factorization (the
+    /// base), what its rows were made of (none before the first), and
+    /// base^{-1} e_j for the rows j changed since (empty where not needed).
+    dealii::LAPACKFullMatrix<double>    base;
+    std::vector<RowsOfPair>             base_rows;
+    std::vector<dealii::Vector<double>> update_columns;
     Vector              rhs, correction;
   };
 

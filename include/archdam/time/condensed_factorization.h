@@ -2,6 +2,7 @@
 
 #include <archdam/base/types.h>
 
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -28,10 +29,18 @@ namespace archdam::time
   class CondensedFactorization
   {
   public:
+    /// The fill-reducing order of the unknowns before the interface.
+    enum class Ordering
+    {
+      nested_dissection, ///< METIS (time/fill_reducing_order.h)
+      pord               ///< MUMPS's PORD
+    };
+
     /// Factorize A (Cholesky if @p positive_definite, else LDL^T) with the
     /// global unknowns @p interface (sorted, the same on every rank) last.
     CondensedFactorization(const SparseMatrix &A, bool positive_definite,
-                           const std::vector<dealii::types::global_dof_index> &interface);
+                           const std::vector<dealii::types::global_dof_index> &interface,
+                           Ordering ordering = Ordering::nested_dissection);
     ~CondensedFactorization();
     CondensedFactorization(const CondensedFactorization &) = delete;
     CondensedFactorization &
@@ -44,9 +53,28 @@ namespace archdam::time
       return gamma;
     }
 
-    /// Entries in the sparse factors (MUMPS's INFOG(29)).
-    double
-    factor_entries() const;
+    /// What the sparse factorization holds and cost.
+    struct Statistics
+    {
+      double entries    = 0.; ///< entries in the factors (MUMPS's INFOG(29))
+      double operations = 0.; ///< floating-point operations of the elimination (RINFOG(3))
+      double memory     = 0.; ///< bytes used by the factorization, all processes (INFOG(22))
+    };
+    const Statistics &
+    statistics() const
+    {
+      return stats;
+    }
+
+    /// The wall time spent so far in condense()'s forward elimination and
+    /// expand()'s backward substitution [s] (the calls into MUMPS).
+    struct SolveTimes
+    {
+      double elimination  = 0.;
+      double substitution = 0.;
+    };
+    SolveTimes
+    solve_times() const;
 
     /// v = S^{-1} v (S factorized densely, on every rank).
     void
@@ -70,5 +98,7 @@ namespace archdam::time
     std::unique_ptr<Mumps>                   mumps;
     std::vector<dealii::types::global_dof_index>     gamma;
     dealii::LAPACKFullMatrix<double>         schur; ///< factorized
+    Statistics                               stats;
+    mutable dealii::Timer                    elimination, substitution;
   };
 } // namespace archdam::time

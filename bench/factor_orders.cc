@@ -1,0 +1,173 @@
+// Benchmark (issue 19; doc/performance.md §7): the fill-reducing order of the
+// condensed factorization on a real case, by default the reference case on
+// its production mesh (prm/paper_235m_dam.prm: Q2, 245,706 DOFs, 780 node
+// pairs). On the dynamic stage's effective matrix (the coupled dam-water
+// system with the foundation's dashpots, made by
+// Simulation::make_integrator()) with the node pairs' DOFs last:
+//   nested dissection: METIS on the node graph (time/fill_reducing_order.h,
+//                      the library's order)
+//   PORD:              MUMPS's own order (the library's order before)
+// For each: the wall time of the factorization (order, analysis and
+// factorization), the factor's entries, the elimination's operations and the
+// memory MUMPS used (INFOG(29), RINFOG(3), INFOG(22)), and the mean wall
+// time of the forward elimination and the backward substitution of one
+// solve. The solves are checked against a manufactured solution: b = Kbar x
+// for a known x, and the relative error of each factor's solution.
+//
+//   bench_factor_orders [CASE.prm] [--set "Section/Parameter=value"]...
+//                       [--rounds R] [--solves N]
+//
+// Defaults: the reference case, --rounds 1 (each factorization takes about
+// a minute there), --solves 5. Rounds alternate the orders, one
+// factorization alive at a time. The integrator's own factorization, made
+// first, is released before the rounds.
+
+#include <archdam/analysis/simulation.h>
+#include <archdam/parameters/parameters.h>
+#include <archdam/time/condensed_factorization.h>
+
+#include <deal.II/base/timer.h>
+
+#include <iomanip>
+#include <iostream>
+#include <random>
+
+#include "bench_common.h"
+
+using namespace archdam;
+using Ordering = time::CondensedFactorization::Ordering;
+
+namespace
+{
+  struct Result
+  {
+    double factorization = 0., elimination = 0., substitution = 0., error = 0.;
+    time::CondensedFactorization::Statistics statistics;
+  };
+
+  Result
+  measure(const SparseMatrix &A, const std::vector<dealii::types::global_dof_index> &interface,
+          const Ordering ordering, const Vector &b, const Vector &x_exact,
+          const unsigned int solves)
+  {
+    Result        r;
+    dealii::Timer timer;
+    // The effective matrix of the coupled system is indefinite: LDL^T, as
+    // the integrator factorizes it.
+    const time::CondensedFactorization factor(A, false, interface, ordering);
+    r.factorization = timer.wall_time();
+    r.statistics    = factor.statistics();
+    Vector                 x(b);
+    dealii::Vector<double> x_gamma;
+    for (unsigned int k = 0; k < solves; ++k)
+      {
+        factor.condense(b, x_gamma);
+        factor.solve_interface(x_gamma);
+        factor.expand(x_gamma, x);
+      }
+    const auto times = factor.solve_times();
+    r.elimination    = times.elimination / solves;
+    r.substitution   = times.substitution / solves;
+    x -= x_exact;
+    r.error = x.linfty_norm() / x_exact.linfty_norm();
+    return r;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  std::string              file = "prm/paper_235m_dam.prm";
+  std::vector<std::string> overrides;
+  unsigned int             rounds = 1, solves = 5;
+  for (int i = 1; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      if (a == "--set" && i + 1 < argc)
+        overrides.push_back(argv[++i]);
+      else if (a == "--rounds" && i + 1 < argc)
+        rounds = std::stoi(argv[++i]);
+      else if (a == "--solves" && i + 1 < argc)
+        solves = std::stoi(argv[++i]);
+      else
+        file = a;
+    }
+  auto &out = bench::screen();
+
+  const Parameters     p = read_parameters(file, overrides);
+  std::ostringstream   quiet;
+  analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
+  dealii::Timer        setup;
+  const auto          &model = sim.setup_model();
+  AssertThrow(model.joint_pairs(), dealii::ExcMessage("The case has no joints in contact."));
+  const auto interface = model.joint_pairs()->interface();
+  out << file << ": " << model.space().dof_handler.n_dofs() << " DOFs, "
+      << model.joint_pairs()->size() << " node pairs (" << interface.size()
+      << " interface DOFs), " << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+      << " MPI process(es); setup " << std::setprecision(3) << setup.wall_time() << " s\n";
+
+  // The effective matrix, copied; the integrator and its factorization
+  // released before the rounds.
+  SparseMatrix A;
+  {
+    const auto integrator = sim.make_integrator();
+    A.reinit(integrator->effective());
+    A.copy_from(integrator->effective());
+  }
+  Vector x_exact, b;
+  model.space().reinit(x_exact);
+  model.space().reinit(b);
+  std::mt19937                           random(42);
+  std::uniform_real_distribution<double> uniform(-1., 1.);
+  for (const auto i : x_exact.locally_owned_elements())
+    x_exact(i) = uniform(random);
+  x_exact.compress(dealii::VectorOperation::insert);
+  model.space().constraints.set_zero(x_exact);
+  A.vmult(b, x_exact);
+
+  const std::vector<std::pair<Ordering, std::string>> orders = {
+    {Ordering::nested_dissection, "nested dissection (METIS)"}, {Ordering::pord, "PORD"}};
+  std::vector<std::vector<Result>> results(orders.size());
+  for (unsigned int r = 0; r < rounds; ++r)
+    for (unsigned int o = 0; o < orders.size(); ++o)
+      results[o].push_back(measure(A, interface, orders[o].first, b, x_exact, solves));
+
+  out << "\nper order, means over " << rounds << " round(s), " << solves
+      << " solves each; peak resident memory of the process " << std::setprecision(3)
+      << bench::memory_gb("VmHWM") << " GB\n"
+      << std::left << std::setw(28) << "order" << std::right << std::setw(12) << "factor [s]"
+      << std::setw(14) << "entries" << std::setw(14) << "operations" << std::setw(13)
+      << "memory [GB]" << std::setw(16) << "elimination [s]" << std::setw(17)
+      << "substitution [s]" << std::setw(12) << "error" << "\n";
+  std::vector<Result> mean(orders.size());
+  for (unsigned int o = 0; o < orders.size(); ++o)
+    {
+      for (const auto &r : results[o])
+        {
+          mean[o].factorization += r.factorization / rounds;
+          mean[o].elimination += r.elimination / rounds;
+          mean[o].substitution += r.substitution / rounds;
+          mean[o].error = std::max(mean[o].error, r.error);
+        }
+      mean[o].statistics = results[o].front().statistics;
+      const auto &m      = mean[o];
+      out << std::left << std::setw(28) << orders[o].second << std::right << std::setprecision(3)
+          << std::setw(12) << m.factorization << std::setw(14) << m.statistics.entries
+          << std::setw(14) << m.statistics.operations << std::setw(13)
+          << 1e-9 * m.statistics.memory << std::setw(16) << m.elimination << std::setw(17)
+          << m.substitution << std::setw(12) << m.error << "\n";
+    }
+  const auto ratio = [&](const std::string &name, const double nd, const double pord) {
+    bench::figure(out, "nested dissection / PORD, " + name) << std::setprecision(3) << nd / pord
+                                                           << "\n";
+  };
+  out << "\n";
+  ratio("factorization time", mean[0].factorization, mean[1].factorization);
+  ratio("factor entries", mean[0].statistics.entries, mean[1].statistics.entries);
+  ratio("operations", mean[0].statistics.operations, mean[1].statistics.operations);
+  ratio("memory", mean[0].statistics.memory, mean[1].statistics.memory);
+  ratio("elimination", mean[0].elimination, mean[1].elimination);
+  ratio("substitution", mean[0].substitution, mean[1].substitution);
+  return 0;
+}
