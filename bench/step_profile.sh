@@ -7,7 +7,7 @@
 # summary.json (dynamic/time per step [s]: forward elimination, contact
 # problem, backward substitution, energy balance, other recorders, the copy
 # of the last good step; the foundation's boundary update), each also as a
-# share of the step.
+# share of the step, and what the dynamic stage holds (dynamic/memory [MB]).
 #
 # usage: bash bench/step_profile.sh [BUILD_DIR] [OUTPUT_DIR] [END_TIME] [MPI_PROCESSES] [CASE.prm] [--set "S/P=V"]...
 set -euo pipefail
@@ -47,4 +47,7 @@ c = s.get("contact problem", {})
 if c:
     print(f"contact problem: {c['factorizations']} factorizations, {c['updated solves']} updated solves; "
           f"{s['contact iterations per step']['average']} iterations per step on average")
+m = s.get("memory [MB]", {})
+if m:
+    print("held in the dynamic stage [MB]: " + ", ".join(f"{k} {v:.0f}" for k, v in m.items()))
 PY

@@ -27,8 +27,9 @@
 // same operations in the same order; the HDF5 files themselves carry
 // creation times and are compared by value), and summary.json the same in
 // every entry except the wall times (the resumed run did not repeat the
-// static stage, and its clock started anew) and the counts of the contact
-// problem's factorizations (counted since the resume).
+// static stage, and its clock started anew), the memory (its peak is that of
+// the resumed run) and the counts of the contact problem's factorizations
+// (counted since the resume).
 // The resumed run must say from which step it continued (a checkpoint before
 // the kill) and must not have repeated the static stage.
 //
@@ -207,8 +208,8 @@ namespace
     return o;
   }
 
-  /// summary.json as "path = value" entries, without the wall times and
-  /// the counts of the contact problem's factorizations.
+  /// summary.json as "path = value" entries, without the wall times, the
+  /// memory and the counts of the contact problem's factorizations.
   std::map<std::string, std::string>
   summary_entries(const fs::path &file)
   {
@@ -226,6 +227,7 @@ namespace
               // which are of this run: since the resume)
               if (name.find("wall time") == std::string::npos &&
                   name.find("time to build") == std::string::npos &&
+                  name.find("memory [MB]") == std::string::npos &&
                   name.find("per step [s]") == std::string::npos &&
                   name.find("contact problem/") == std::string::npos)
                 entries[name] = child.data();

@@ -3,6 +3,8 @@
 #include <archdam/base/run_stopped.h>
 #include <archdam/time/divergence_check.h>
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -29,17 +31,20 @@ namespace archdam::analysis
   } // namespace
 
   /**
-   * The energy balance of the dynamic stage (doc/theory/results.md §7) on the model's
-   * own operators: the solid's M, K and Rayleigh damping, the water's
-   * operators, and the foundation's boundary.
+   * The energy balance of the dynamic stage (doc/theory/results.md §7) on the
+   * operators the integrator steps: the solid's M, K and Rayleigh damping or
+   * the coupled dam-water system's M, D, K (made with the integrator), the
+   * water's operators, and the foundation's boundary.
    */
   std::unique_ptr<EnergyBalance>
   Simulation::make_energy_balance() const
   {
     EnergyBalance::Model operators;
     operators.space     = &model().space();
-    operators.mass      = &model().mass();
-    operators.stiffness = &model().stiffness();
+    operators.mass      = coupled ? &coupled->mass : &model().mass();
+    operators.stiffness = coupled ? &coupled->stiffness : &model().stiffness();
+    if (coupled)
+      operators.damping = &coupled->damping;
     operators.rayleigh  = p.damping.rayleigh_coefficients();
     operators.newmark   = p.time_integration;
     operators.fluid     = model().fluid();
@@ -72,6 +77,8 @@ namespace archdam::analysis
                                                    p.reservoir.density,
                                                    p.time_integration.beta2, dt, rayleigh,
                                                    *boundary);
+        // The coupled system's solid blocks are M, D and K: no matrix held twice.
+        built_model->release_solid_matrices();
         return std::make_unique<time::NewmarkIntegrator>(
           p.time_integration, coupled->mass, coupled->damping, coupled->stiffness,
           model().space().constraints, false, foundation() ? foundation()->dashpots() : nullptr,
@@ -87,10 +94,10 @@ namespace archdam::analysis
   Simulation::make_recorders()
   {
     // In the order they finish (the balance's line, then the peaks) and a
-    // checkpoint holds them. A new output is one more line here.
+    // checkpoint holds them. A new output is one more line here. The energy
+    // balance comes first, made with the integrator (run_dynamic_stage()).
     const std::string &directory = p.output.directory;
     recorders.clear();
-    recorders.push_back(make_energy_balance());
     recorders.push_back(std::make_unique<output::MonitorHistories>(model().monitors(), directory, comm));
     if (p.reservoir.has_pressure())
       recorders.push_back(std::make_unique<output::PressureRecorder>(
@@ -176,10 +183,15 @@ namespace archdam::analysis
       TimerOutput::Scope t(timer, "dynamic: factorization");
       integrator = make_integrator();
     }
+    recorders.insert(recorders.begin(), make_energy_balance());
     screen << "  factors: " << std::setprecision(4) << integrator->effective_factor().factor_entries()
            << " entries" << std::endl;
     if (model().joint_pairs())
       start_dynamic_joints(*integrator);
+    // The steps need Kbar's factor, not Kbar (unless the joints' solver
+    // refactorizes it): a matrix the size of K less to hold.
+    if (!joint_solver || !joint_solver->uses_matrix())
+      integrator->release_effective_matrix();
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
@@ -353,6 +365,44 @@ namespace archdam::analysis
           }
       }
     summarize_step_costs(steps_run);
+    summarize_memory();
+  }
+
+  void
+  Simulation::summarize_memory()
+  {
+    // The matrices as PETSc stores them, 8 bytes of value and one column
+    // index per entry (doc/performance.md §9), summed over the processes.
+    const auto megabytes = [](std::initializer_list<const SparseMatrix *> matrices) {
+      double bytes = 0.;
+      for (const SparseMatrix *A : matrices)
+        bytes += A->n_nonzero_elements() * (sizeof(PetscScalar) + sizeof(PetscInt)) +
+                 A->m() * sizeof(PetscInt);
+      return 1e-6 * bytes;
+    };
+    const std::string s = "dynamic/memory [MB]/";
+    if (model().mass().m() > 0)
+      summary.set(s + "solid M and K", megabytes({&model().mass(), &model().stiffness()}));
+    if (const auto *water = model().fluid())
+      summary.set(s + "water G, H, Q, S, S^T",
+                  megabytes({&water->G, &water->H, &water->Q, &water->S, &water->S_transpose}));
+    if (coupled)
+      summary.set(s + "coupled M, D, K",
+                  megabytes({&coupled->mass, &coupled->damping, &coupled->stiffness}));
+    if (integrator && integrator->effective().m() > 0)
+      summary.set(s + "effective matrix", megabytes({&integrator->effective()}));
+    if (const auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
+      summary.set(s + "outer boundary columns",
+                  megabytes({&boundary->mass_columns, &boundary->stiffness_columns,
+                             &boundary->damping_columns}));
+    if (const auto *condensed = integrator ? integrator->effective_factor().condensed() : nullptr)
+      summary.set(s + "factorization", 1e-6 * condensed->statistics().memory);
+    // The largest process's peak, and the sum of the processes' peaks.
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    const double peak = 1e-3 * usage.ru_maxrss; // kB
+    summary.set(s + "peak resident, largest process", Utilities::MPI::max(peak, comm));
+    summary.set(s + "peak resident, all processes", Utilities::MPI::sum(peak, comm));
   }
 
   void

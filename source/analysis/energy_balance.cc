@@ -25,11 +25,11 @@ namespace archdam::analysis
   {
     AssertThrow(m.space && m.mass && m.stiffness,
                 ExcMessage("The energy balance needs the FE space, M and K."));
-    for (Vector *v : {&free_mask, &kept_mask, &pressure_mask, &prescribed_mask, &u_static,
+    for (Vector *v : {&free_mask, &kept_mask, &pressure_mask, &solid_mask, &prescribed_mask, &u_static,
                       &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
                       &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product,
-                      &a_prev, &inertia_prev, &mean, &jump})
+                      &a_prev, &inertia_prev, &mean, &jump, &solid_part})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -37,6 +37,10 @@ namespace archdam::analysis
           pressure_mask(i) = 1.;
         pressure_mask.compress(VectorOperation::insert);
       }
+    // 1 at every DOF but the free pressures (the constrained ones are zero
+    // in free_part()'s vectors and rows).
+    solid_mask = 1.;
+    solid_mask -= pressure_mask;
     if (m.prescribed)
       {
         const IndexSet owned = prescribed_mask.locally_owned_elements();
@@ -70,26 +74,31 @@ namespace archdam::analysis
     // the condensed A on the free entries, and with a prescribed boundary b
     // its columns (time::PrescribedDofs, all rows of the cells touching b):
     //   (A x)_f = A_cond x_f + (A_col x_b)_f,   (A x)_b = (A_col x)_b.
-    // The water's rows (Phi S in the coupled columns) are left out.
-    A.vmult(out, x);
+    // The water's rows (Phi S in the coupled columns) are left out, and so
+    // are its columns (the coupled K's -(1/rho_w) S^T: the pressure's work
+    // on the dam is counted in the water's balance).
+    const Vector *solid = &x;
+    if (has_water)
+      {
+        solid_part = x;
+        solid_part.scale(solid_mask);
+        solid = &solid_part;
+      }
+    A.vmult(out, *solid);
     out.scale(free_mask);
     if (A_columns)
       {
-        A_columns->vmult(scratch, x);
+        A_columns->vmult(scratch, *solid);
         scratch.scale(prescribed_mask);
         out += scratch;
-        scratch = x;
+        scratch = *solid;
         scratch.scale(prescribed_mask);
         A_columns->vmult(product, scratch);
         product.scale(free_mask);
         out += product;
       }
     if (has_water)
-      {
-        scratch = out;
-        scratch.scale(pressure_mask);
-        out -= scratch;
-      }
+      out.scale(solid_mask);
   }
 
   void
@@ -97,6 +106,11 @@ namespace archdam::analysis
   {
     // D = alpha M + beta K (doc/theory/solid.md §4); for the coupled system this is
     // the solid's block of D_c, the water's radiation being counted apart.
+    if (m.damping)
+      {
+        full_product(*m.damping, damping_columns(), v, out);
+        return;
+      }
     full_product(*m.mass, mass_columns(), v, out);
     out *= m.rayleigh.first;
     if (m.rayleigh.second != 0.)

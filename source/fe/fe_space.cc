@@ -69,6 +69,17 @@ namespace archdam::fe
   void
   FESpace::reinit(SparseMatrix &matrix) const
   {
+    reinit(matrix, [this](DynamicSparsityPattern &dsp) {
+      DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
+      if (add_couplings)
+        add_couplings(dsp);
+    });
+  }
+
+  void
+  FESpace::reinit(SparseMatrix                                         &matrix,
+                  const std::function<void(DynamicSparsityPattern &)> &add_entries) const
+  {
     // Rows this rank writes: its relevant DOFs and the DOFs they are
     // constrained to (a tied joint DOF may point to a cell this rank does not
     // see as ghost).
@@ -78,9 +89,7 @@ namespace archdam::fe
         rows.add_index(entry.first);
     rows.compress();
     DynamicSparsityPattern dsp(rows);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    if (add_couplings)
-      add_couplings(dsp);
+    add_entries(dsp);
     SparsityTools::distribute_sparsity_pattern(dsp, locally_owned, comm, rows);
     matrix.reinit(locally_owned, locally_owned, dsp, comm);
   }

@@ -91,17 +91,27 @@ namespace archdam::analysis
    * model, the boundary nodes included (full operators from the prescribed
    * columns), and the input is the work of the reactions there: input minus
    * radiated, which the MTF does not separate.
-   * Cost per step: M v and K v (damping; with a prescribed boundary also its
-   * columns), H p (water), the boundary reactions, and vector operations.
+   * Cost per step: D v (damping, one product with the coupled system's D,
+   * else M v and K v; with a prescribed boundary also its columns), H p
+   * (water), the boundary reactions, and vector operations.
    */
   class EnergyBalance : public output::Recorder
   {
   public:
     /// What the model is made of; pointers are null where a part is absent.
+    /// M, K (and D) are the operators the integrator steps: the solid's, or
+    /// the coupled dam-water system's, whose solid rows are the solid's M, D
+    /// and K (with -(1/rho_w) S^T in the pressure columns of K, which the
+    /// balance leaves out).
     struct Model
     {
       const fe::FESpace                         *space = nullptr;
       const SparseMatrix                        *mass = nullptr, *stiffness = nullptr;
+      /// The damping matrix whose solid block is alpha M + beta K (the
+      /// coupled system's; with a prescribed boundary its columns are
+      /// PrescribedDofs::damping_columns): one product a step. Null: the
+      /// two products alpha M v + beta K v.
+      const SparseMatrix                        *damping = nullptr;
       std::pair<double, double>                  rayleigh{0., 0.};
       time::NewmarkParameters                    newmark;
       /// M iota_d of the relative formulation (massless or rigid foundation).
@@ -166,11 +176,12 @@ namespace archdam::analysis
     void
     free_part(const Vector &x, Vector &out) const;
     /// The full solid operator (condensed @p A plus its prescribed
-    /// @p A_columns, if any) times x from free_part(); solid rows only.
+    /// @p A_columns, if any) times the solid part of x from free_part();
+    /// solid rows only.
     void
     full_product(const SparseMatrix &A, const SparseMatrix *A_columns, const Vector &x,
                  Vector &out) const;
-    /// D v = alpha M v + beta K v (full operators).
+    /// D v = alpha M v + beta K v (full operators; Model::damping if given).
     void
     damping_force(const Vector &v, Vector &out) const;
     /// The reaction on the prescribed DOFs at the state @p s.
@@ -197,12 +208,17 @@ namespace archdam::analysis
     {
       return m.prescribed ? &m.prescribed->stiffness_columns : nullptr;
     }
+    const SparseMatrix *
+    damping_columns() const
+    {
+      return m.prescribed ? &m.prescribed->damping_columns : nullptr;
+    }
 
     const Model m;
     const bool  has_water;
     /// 1 at the unconstrained DOFs; at those and the prescribed ones; at the
-    /// free pressure DOFs; at the prescribed DOFs.
-    Vector free_mask, kept_mask, pressure_mask, prescribed_mask;
+    /// free pressure DOFs; everywhere else; at the prescribed DOFs.
+    Vector free_mask, kept_mask, pressure_mask, solid_mask, prescribed_mask;
 
     /// The state after the last step (free and prescribed entries), the
     /// static state, and each force group at the last step.
@@ -217,6 +233,6 @@ namespace archdam::analysis
     double                 t_prev = 0.;
 
     EnergyTerms sums; ///< the path integrals (input, damping, radiated, contact, water radiated)
-    mutable Vector scratch, product, tmp2;
+    mutable Vector scratch, product, tmp2, solid_part;
   };
 } // namespace archdam::analysis

@@ -65,6 +65,15 @@ namespace archdam::analysis
     {
       return stiffness_matrix;
     }
+    /// Free M and K, once a system that holds them in its blocks (the
+    /// coupled dam-water system) replaces them for the rest of the run:
+    /// mass() and stiffness() are empty from then on.
+    void
+    release_solid_matrices()
+    {
+      mass_matrix.clear();
+      stiffness_matrix.clear();
+    }
     /// F_static: self-weight and hydrostatic pressure as the case asks.
     const Vector &
     static_load() const

@@ -102,8 +102,9 @@ namespace archdam::analysis
       return joint_solver.get();
     }
     /// The dynamic stage's integrator with its factorized effective matrix,
-    /// as that stage makes it (the coupled system with water); for
-    /// benchmarks of the factorization.
+    /// as that stage makes it (the coupled system with water, which then
+    /// replaces the model's M and K: they are released); for benchmarks of
+    /// the factorization.
     std::unique_ptr<time::NewmarkIntegrator>
     make_integrator();
 
@@ -193,7 +194,9 @@ namespace archdam::analysis
     std::unique_ptr<output::CheckpointManifest> resume_from;
     std::string                                 resume_payload;
 
-    /// The dynamic stage's recorders (dynamic_stage.cc), made with the model.
+    /// The dynamic stage's recorders (dynamic_stage.cc), made with the
+    /// model; the energy balance is made with the integrator, whose
+    /// operators it uses.
     void
     make_recorders();
     std::unique_ptr<EnergyBalance>
@@ -210,6 +213,10 @@ namespace archdam::analysis
     /// summary (dynamic/factorization, dynamic/time per step).
     void
     summarize_step_costs(double steps_run);
+    /// What the dynamic stage holds, part by part, and the peak resident
+    /// memory, into the summary (dynamic/memory [MB]).
+    void
+    summarize_memory();
     /// Node pairs, solver and the steps whose contact problem did not
     /// converge, into the summary.
     void

@@ -56,9 +56,17 @@ namespace archdam::fe
 
     /// Matrices get the couplings of the cells (with the constraints) and
     /// those @p add_couplings adds, e.g. fluid-solid interface couplings
-    /// (physics/reservoir); every matrix of the model shares that pattern.
+    /// (physics/reservoir): the model's pattern, which the solid's matrices
+    /// and every sum of operators share.
     void
     reinit(SparseMatrix &matrix) const;
+    /// A matrix with the same rows and columns and the couplings that
+    /// @p add_entries puts into the pattern (rows: the relevant DOFs and
+    /// their constraints' masters); an operator living on part of the model
+    /// (the water's) takes a subset of the model's pattern this way.
+    void
+    reinit(SparseMatrix                                                 &matrix,
+           const std::function<void(dealii::DynamicSparsityPattern &)> &add_entries) const;
     void
     reinit(Vector &vector) const;
     /// A vector with ghost entries, for output and evaluation.

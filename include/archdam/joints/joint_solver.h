@@ -70,6 +70,13 @@ namespace archdam::joints
     virtual void
     forget_factorization()
     {}
+    /// Whether solve() uses the matrix A itself, not only its factor (the
+    /// monolithic reference refactorizes A with its springs).
+    virtual bool
+    uses_matrix() const
+    {
+      return false;
+    }
 
     /// A message for a step that did not converge: joint, place, residual.
     std::string
@@ -356,6 +363,11 @@ namespace archdam::joints
 
     ContactStep
     solve(const Vector &r, const std::vector<double> &w_base, Vector &x) override;
+    bool
+    uses_matrix() const override
+    {
+      return true;
+    }
 
   private:
     const SparseMatrix             &A;

@@ -177,6 +177,13 @@ namespace archdam::time
     {
       return effective_matrix;
     }
+    /// Free Kbar, keeping its factorization (the steps need only that):
+    /// effective() is empty from then on.
+    void
+    release_effective_matrix()
+    {
+      effective_matrix.clear();
+    }
     const FactorizedOperator &
     effective_factor() const
     {

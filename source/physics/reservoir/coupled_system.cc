@@ -10,14 +10,21 @@ namespace archdam::physics::reservoir
   linear_combination(SparseMatrix                                                  &out,
                      std::initializer_list<std::pair<double, const SparseMatrix *>> terms)
   {
-    // All matrices of the model share one pattern (fe::FESpace::reinit), so
-    // PETSc adds them entry by entry.
-    out.reinit(*terms.begin()->second);
+    // The sum takes the pattern of the term with the most entries, the
+    // model's (fe::FESpace::reinit); a term on that pattern is added entry by
+    // entry, one on a subset of it (the water's operators) row by row.
+    const SparseMatrix *widest = terms.begin()->second;
+    for (const auto &term : terms)
+      if (term.second->n_nonzero_elements() > widest->n_nonzero_elements())
+        widest = term.second;
+    out.reinit(*widest);
     out = 0.;
     for (const auto &[c, A] : terms)
       if (c != 0.)
         AssertThrow(MatAXPY(out.petsc_matrix(), c, static_cast<Mat>(*A),
-                            SAME_NONZERO_PATTERN) == 0,
+                            A->n_nonzero_elements() == widest->n_nonzero_elements() ?
+                              SAME_NONZERO_PATTERN :
+                              SUBSET_NONZERO_PATTERN) == 0,
                     ExcMessage("PETSc MatAXPY failed."));
   }
 

@@ -352,7 +352,22 @@ namespace archdam::physics::reservoir
                            const std::vector<InterfacePair> &pairs,
                            FluidOperators                   &ops)
   {
-    space.reinit(ops.Q);
+    // The water's operators take the couplings of the water cells and of
+    // the interface only, a subset of the model's pattern: on the reference
+    // dam's production mesh a tenth of the DOFs are water's, and five
+    // matrices on the model's whole pattern would hold more than the solid's
+    // M and K together (linear_combination() adds them into full ones).
+    space.reinit(ops.Q, [&](DynamicSparsityPattern &dsp) {
+      std::vector<types::global_dof_index> dofs(
+        space.fe_collection[fe::FESpace::fluid_index].n_dofs_per_cell());
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::fluid_index)
+          {
+            cell->get_dof_indices(dofs);
+            space.constraints.add_entries_local_to_global(dofs, dsp, false);
+          }
+      add_interface_couplings(space, pairs, dsp);
+    });
     for (SparseMatrix *m : {&ops.G, &ops.H, &ops.S, &ops.S_transpose})
       m->reinit(ops.Q);
     for (auto &v : ops.influence)

@@ -8,7 +8,9 @@
 
 namespace archdam::physics::reservoir
 {
-  /// out = sum_k c_k A_k for matrices of one sparsity pattern.
+  /// out = sum_k c_k A_k, on the pattern of the term with the most entries;
+  /// every other term's pattern is that one or a subset of it (the model's
+  /// pattern and the water's, fe::FESpace::reinit).
   void
   linear_combination(SparseMatrix                                                  &out,
                      std::initializer_list<std::pair<double, const SparseMatrix *>> terms);

@@ -54,8 +54,9 @@ namespace archdam::physics::reservoir
    * solid columns, S_transpose = S^T in the solid rows; `influence[d]` is
    * S iota_d, the interface integral rho_w int N_f n_d, so that the ground
    * motion enters the water as -sum_d a_g,d influence[d] even where the
-   * solid DOFs are fixed. Every matrix has the model's sparsity pattern (with
-   * the interface couplings), assembled with the model's constraints.
+   * solid DOFs are fixed. Every matrix has the couplings of the water cells
+   * and of the interface (a subset of the model's pattern), assembled with the
+   * model's constraints.
    * Incompressible water drops the 1/c^2 term and the radiation terms.
    */
   struct FluidOperators
