@@ -69,8 +69,10 @@ has_section() {
   local page=$1 section=$2 line list=" "
   if [ -z "${headings[$page]+set}" ]; then
     while IFS= read -r line; do
-      [[ $line =~ ^#+[[:space:]]+§?([0-9]+(\.[0-9]+)*)\.?([[:space:]]|$) ]] &&
-        list+="${BASH_REMATCH[1]} "
+      # (§)? as a group: in the C locale § is two bytes, and §? would make
+      # only the second optional
+      [[ $line =~ ^#+[[:space:]]+(§)?([0-9]+(\.[0-9]+)*)\.?([[:space:]]|$) ]] &&
+        list+="${BASH_REMATCH[2]} "
     done <"$page"
     headings[$page]=$list
   fi

@@ -19,8 +19,9 @@
 //    of a physical group leaves a hole) and two neighbouring blocks that do
 //    not touch (no joint between them);
 //  - with frictional joints and the mixed method, a block held by its joint
-//    alone (the static stage would need K^-1; accepted with the monolithic
-//    solver);
+//    alone (the static stage would need K^-1, and so would the self-weight
+//    on the ungrouted cantilevers; accepted with the monolithic solver and
+//    the joints grouted before the self-weight);
 //  - a physical surface inside the model (on a joint);
 //  - malformed files, each caught before deal.II's GridIn reads them (the
 //    fuzz target fuzz_gmsh_mesh found what GridIn does not check): a count
@@ -243,7 +244,8 @@ main(int argc, char **argv)
   {
     // block 0 fixed on its far face x = 0 (nodes 1 3 7 5, physical surface
     // 1), block 1 held by the joint alone: the static stage of the mixed
-    // method has no K^-1 for it, the monolithic solver holds it
+    // method has no K^-1 for it, nor has the self-weight on the ungrouted
+    // cantilevers; the monolithic solver holds it, the joints grouted first
     std::string text = two_blocks(true);
     text.replace(text.find("$Elements\n2\n"), 12, "$Elements\n3\n");
     text.replace(text.find("$EndElements"), 0, "3 3 2 1 1 1 3 7 5\n");
@@ -254,6 +256,8 @@ main(int argc, char **argv)
         joints + "mixed\nend\n");
     run("the same with the monolithic solver (accepted)", "hanging_block.msh",
         joints + "monolithic\nend\n");
+    run("the same with the joints grouted after the self-weight", "hanging_block.msh",
+        joints + "monolithic\n  set Grouting = after self-weight\nend\n");
   }
   write("separate_blocks.msh", two_blocks(false));
   run("two dam blocks meshed separately: joint faces without a partner", "separate_blocks.msh");

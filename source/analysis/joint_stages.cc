@@ -2,6 +2,7 @@
 #include <archdam/base/input_error.h>
 
 #include <algorithm>
+#include <iomanip>
 
 namespace archdam::analysis
 {
@@ -32,10 +33,14 @@ namespace archdam::analysis
   }
 
   /**
-   * Static stage with the joints in frictional contact (doc/theory/joints.md §8, first
-   * line): the mixed method with K in place of Kbar, the whole static load in
-   * one step from the unloaded, closed joints; gravity is carried through the
-   * closed joints.
+   * Static stage with the joints in frictional contact (doc/theory/loading-sequence.md
+   * §1, doc/theory/joints.md §8, first line). Grouting = after self-weight:
+   * the self-weight on the independent cantilevers (K u_g = F_g, no pair
+   * forces), the joints grouted at u_g; then the mixed method with K in place
+   * of Kbar for the whole static load from the grouted, closed joints, which
+   * see only the displacement since grouting (the hydrostatic load's).
+   * Grouting = before self-weight: that second solve alone, the weight
+   * carried through the closed joints too.
    */
   void
   Simulation::solve_static_with_joints(const SparseMatrix             &stiffness,
@@ -44,8 +49,22 @@ namespace archdam::analysis
   {
     joint_solver =
       joints::make_joint_solver(p.joints, *model().joint_pairs(), 1., stiffness, stiffness_factor);
-    const std::vector<double> unloaded(dim * model().joint_pairs()->size(), 0.);
-    const auto                step = joint_solver->solve(rhs, unloaded, u_static);
+    if (p.joints.grouting == joints::Grouting::after_self_weight)
+      {
+        Vector weight = model().self_weight();
+        model().space().constraints.set_zero(weight);
+        stiffness_factor.solve(u_static, weight);
+        joint_solver->grout(u_static);
+        // What the blocks do on their own: a block that cannot stand without
+        // its neighbours shows here (doc/theory/loading-sequence.md §1).
+        const double max_u = u_static.linfty_norm();
+        screen << "  the self-weight on the independent cantilevers (max |u_i| = "
+               << std::setprecision(4) << max_u << " m), then the joints grouted" << std::endl;
+        summary.set("static/ungrouted cantilevers under self-weight: max nodal displacement "
+                    "component [m]",
+                    max_u);
+      }
+    const auto step = joint_solver->solve(rhs, joint_solver->unloaded(), u_static);
     if (!step.converged)
       non_converged_times.push_back(0.);
     check_convergence(p.joints, *joint_solver, step, "static stage");

@@ -30,8 +30,11 @@ namespace archdam::analysis
   void
   Model::check_static_support(const Parameters &p, const Triangulation<dim> &model)
   {
-    if (!p.joints.frictional() || p.joints.solver != joints::Solver::mixed ||
-        !p.analysis.runs("static"))
+    // The static stage needs K^{-1} for the mixed method and for the
+    // self-weight on the ungrouted cantilevers (doc/theory/joints.md §8).
+    const bool mixed    = p.joints.solver == joints::Solver::mixed;
+    const bool ungrouted = p.joints.grouting == joints::Grouting::after_self_weight;
+    if (!p.joints.frictional() || !(mixed || ungrouted) || !p.analysis.runs("static"))
       return;
     const auto blocks = geometry::blocks_held_by_joints_alone(model);
     if (blocks.empty())
@@ -43,9 +46,12 @@ namespace archdam::analysis
       "Static stage: dam block" + std::string(blocks.size() > 1 ? "s " : " ") + list +
       (blocks.size() > 1 ? " rest" : " rests") +
       " on joints alone: no part of " + (blocks.size() > 1 ? "them" : "it") +
-      " is tied to the rock or to the model's outer boundary (ids 1, 2). The mixed method "
-      "solves the static stage with K, which has no inverse for such a block "
-      "(doc/theory/joints.md §8). Use Contraction joints/Solver = monolithic, whose "
+      " is tied to the rock or to the model's outer boundary (ids 1, 2). " +
+      (mixed ? "The mixed method solves the static stage with K" :
+               "With Contraction joints/Grouting = after self-weight the static stage first "
+               "solves the self-weight on the ungrouted blocks with K") +
+      ", which has no inverse for such a block (doc/theory/joints.md §8). Use Contraction "
+      "joints/Solver = monolithic with Grouting = before self-weight (the default), whose "
       "penalty springs hold the block on its joints, or tie the block to the rock.");
   }
 
@@ -119,7 +125,9 @@ namespace archdam::analysis
                                           p.static_loads.gravity_on_rock ?
                                             physics::solid::InertiaOf::dam_and_rock :
                                             physics::solid::InertiaOf::dam,
-                                          gravity, static_forces);
+                                          gravity, weight_forces);
+    fe_space->reinit(static_forces);
+    static_forces = weight_forces;
     if (p.static_loads.hydrostatic && water != reservoir::Model::none)
       reservoir::add_hydrostatic_load(*fe_space, p.reservoir.density, p.static_loads.g, level,
                                       static_forces);

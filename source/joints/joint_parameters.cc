@@ -58,6 +58,17 @@ namespace archdam::joints
                   "their relative velocity at the step's end at zero: a step cannot "
                   "create energy at the joints, and persistent contact does not "
                   "chatter. Step impulse needs the mixed solver.");
+    add_selection(prm, "Grouting", grouting, grouting_names(),
+                  "When the static stage grouts the joints (doc/theory/loading-sequence.md "
+                  "§1): before self-weight = the whole static load on the grouted dam at "
+                  "once, the weight carried across the joints too (the blocks of the "
+                  "parametric arch dam lean on each other: its joints fan out with the "
+                  "canyon, doc/arch-dam-geometry.md §10); after self-weight = as a dam with "
+                  "vertical joints is built: the self-weight acts on the independent "
+                  "cantilevers (the joints carry nothing), the joints are grouted in that "
+                  "deformed state (its relative displacements become the joints' zero: no "
+                  "opening, slip or force from self-weight), then the hydrostatic load "
+                  "acts on the grouted dam with the joints in contact.");
     prm.add_parameter("Friction coefficient", law.friction_coefficient,
                       "Coulomb friction coefficient mu of the joint faces.",
                       Patterns::Double(0.));

@@ -21,6 +21,7 @@ namespace archdam::joints
     , state(pairs.size(), PairState::stick)
     , damaged(pairs.size(), false)
     , largest_opening(pairs.size(), 0.)
+    , w_grouted(dim * pairs.size(), 0.)
     , p(p)
     , h(h)
     , law(make_joint_law(p.strength_law))
@@ -55,6 +56,35 @@ namespace archdam::joints
     state           = other.state;
     damaged         = other.damaged;
     largest_opening = other.largest_opening;
+    w_grouted       = other.w_grouted;
+  }
+
+  void
+  JointSolver::grout(const Vector &u)
+  {
+    pairs.relative_displacement(u, w_grouted);
+    for (auto *v : {&force, &force_committed, &pair_load, &load_committed, &w, &w_committed})
+      std::fill(v->begin(), v->end(), 0.);
+    std::fill(state.begin(), state.end(), PairState::stick);
+    std::fill(damaged.begin(), damaged.end(), false);
+    std::fill(largest_opening.begin(), largest_opening.end(), 0.);
+  }
+
+  void
+  JointSolver::joint_displacement(const Vector &u, std::vector<double> &w_u) const
+  {
+    pairs.relative_displacement(u, w_u);
+    for (unsigned int j = 0; j < w_u.size(); ++j)
+      w_u[j] -= w_grouted[j];
+  }
+
+  std::vector<double>
+  JointSolver::unloaded() const
+  {
+    std::vector<double> w_0(w_grouted.size());
+    for (unsigned int j = 0; j < w_0.size(); ++j)
+      w_0[j] = -w_grouted[j];
+    return w_0;
   }
 
   double
@@ -111,7 +141,7 @@ namespace archdam::joints
     Vector x(newmark.predicted_displacement());
     x.add(-newmark.displacement_factor() / newmark.velocity_factor(),
           newmark.predicted_velocity());
-    pairs.relative_displacement(x, velocity_target);
+    joint_displacement(x, velocity_target);
   }
 
   void
@@ -240,7 +270,7 @@ namespace archdam::joints
   {
     return [&newmark, &solver, &step](const Vector &rhs, Vector &da) {
       std::vector<double> w_base;
-      solver.pairs.relative_displacement(newmark.predicted_displacement(), w_base);
+      solver.joint_displacement(newmark.predicted_displacement(), w_base);
       solver.prepare_step(newmark);
       step = solver.solve(rhs, w_base, da);
       solver.accept();
@@ -269,14 +299,14 @@ namespace archdam::joints
   JointSolver::save(std::ostream &out) const
   {
     binary::write_all(out, force, force_committed, pair_load, load_committed, w, w_committed, state,
-                      damaged, largest_opening);
+                      damaged, largest_opening, w_grouted);
   }
 
   void
   JointSolver::load(std::istream &in)
   {
     binary::read_all(in, force, force_committed, pair_load, load_committed, w, w_committed, state,
-                     damaged, largest_opening);
+                     damaged, largest_opening, w_grouted);
     if (state.size() != pairs.size() || force.size() != dim * pairs.size())
       throw InputError("Checkpoint: the saved joint state has " + std::to_string(state.size()) +
                        " node pairs, the model " + std::to_string(pairs.size()) + ".");

@@ -80,6 +80,12 @@ namespace archdam::analysis
     {
       return static_forces;
     }
+    /// The self-weight part of F_static (the dam's, and the rock's if asked).
+    const Vector &
+    self_weight() const
+    {
+      return weight_forces;
+    }
     /// M iota_d of the relative formulation, d = x, y, z (doc/theory/foundation.md §2).
     const std::array<Vector, dim> &
     influence_loads() const
@@ -142,7 +148,7 @@ namespace archdam::analysis
     std::vector<joints::JointFacePair>                     joint_faces;
     std::unique_ptr<fe::FESpace>                           fe_space;
     SparseMatrix                                           mass_matrix, stiffness_matrix;
-    Vector                                                 static_forces;
+    Vector                                                 static_forces, weight_forces;
     std::array<Vector, dim>                                influence;
     std::vector<physics::reservoir::InterfacePair>         interfaces;
     std::unique_ptr<physics::reservoir::FluidOperators>    fluid_operators;

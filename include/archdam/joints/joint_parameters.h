@@ -126,6 +126,23 @@ namespace archdam::joints
     return names;
   }
 
+  /// `Contraction joints/Grouting`: when the static stage grouts the joints
+  /// (doc/theory/loading-sequence.md §1).
+  enum class Grouting
+  {
+    after_self_weight, ///< self-weight on the independent cantilevers, then grouted, then the rest
+    before_self_weight ///< the whole static load on the grouted dam
+  };
+
+  /// The names of Grouting in the case file.
+  inline const SelectionNames<Grouting> &
+  grouting_names()
+  {
+    static const SelectionNames<Grouting> names{{"after self-weight", Grouting::after_self_weight},
+                                                {"before self-weight", Grouting::before_self_weight}};
+    return names;
+  }
+
   /// The values of the law of one joint (doc/theory/joints.md §2, the
   /// paper's Table 1). Stresses in Pa, lengths in m.
   struct LawParameters
@@ -150,6 +167,7 @@ namespace archdam::joints
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     Law           strength_law = Law::mohr_coulomb;
     ContactInTime contact_in_time = ContactInTime::trapezoidal;
+    Grouting      grouting        = Grouting::before_self_weight;
     LawParameters law;
     /// "k: name = value, ...; ..." overrides of the law for single joints
     std::string per_joint;

@@ -32,8 +32,10 @@ namespace archdam::joints
    * One implicit solve with joint forces (doc/theory/joints.md §3):
    *   A x = r - B^T f,   w = w_base + h B x,   the law at every pair,
    * where f (3 per pair, local frame) is the force on side 1 (-f on side 2).
-   * The dynamic step has A = Kbar, x = da, w_base = B u^p, h = beta2 dt^2;
-   * the static stage A = K, x = u, w_base = 0, h = 1. The solver keeps the
+   * The dynamic step has A = Kbar, x = da, w_base = B u^p - w_g, h = beta2 dt^2;
+   * the static stage A = K, x = u, w_base = -w_g, h = 1, where w_g = B u_g
+   * is the relative displacement at grouting (joint_displacement(): the law
+   * sees the joints' movement since they were grouted). The solver keeps the
    * committed state of every pair (force, relative displacement, state, and
    * whether its intact strength is lost); solve() starts from it and accept()
    * commits the new one.
@@ -52,9 +54,24 @@ namespace archdam::joints
     void
     accept();
 
-    /// Start from a committed state (e.g. the static stage's), keeping the damage.
+    /// Start from a committed state (e.g. the static stage's), keeping the
+    /// damage and the grouted state.
     void
     set_state(const JointSolver &other);
+
+    /// Grout the joints in the state @p u (doc/theory/loading-sequence.md
+    /// §1): its relative displacements become the joints' zero, and the
+    /// joints are intact, closed and unloaded.
+    void
+    grout(const Vector &u);
+
+    /// The relative displacement the law sees at @p u (3 per pair, local
+    /// frame): B u less its value at grouting.
+    void
+    joint_displacement(const Vector &u, std::vector<double> &w_u) const;
+    /// The same at u = 0, the static stage's w_base.
+    std::vector<double>
+    unloaded() const;
 
     /// The committed state of every pair (forces, relative displacements,
     /// states, damage), for a checkpoint (output/checkpoint.h); solve()
@@ -107,6 +124,8 @@ namespace archdam::joints
     /// committed gaps.
     std::vector<bool>   damaged;
     std::vector<double> largest_opening;
+    /// B u_g: the relative displacements at grouting (zero unless grouted).
+    std::vector<double> w_grouted;
 
     /// delta = delta_0 + w_xi of pair i (positive = open).
     double
@@ -209,7 +228,6 @@ namespace archdam::joints
     const double               h;
     std::unique_ptr<JointLaw>  law;
     std::vector<LawParameters> laws;
-    std::vector<double>    w_initial;
   };
 
   /**
@@ -381,7 +399,7 @@ namespace archdam::joints
   /**
    * The solve of one Newmark step with joint forces (doc/theory/joints.md §5), for
    * NewmarkIntegrator::advance(): @p solver's predictor, contact problem and
-   * corrector with w_base = B u^p; the pair state is committed and how the
+   * corrector with w_base = B u^p - w_g; the pair state is committed and how the
    * contact problem went is left in @p step (the caller decides what a step
    * that did not converge means).
    */
