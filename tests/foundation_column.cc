@@ -19,8 +19,25 @@
 //    there); the boundary adds its own small error. After the reflected pulse
 //    has left through the bottom the energy left must again be below 2 % of
 //    the largest energy during the run (the incident energy).
+// C. Damping per material (doc/theory/solid.md §4, doc/theory/foundation.md §4):
+//    the SV column's seismic input with its lower 120 m damped as rock and
+//    its upper 80 m as an undamped "dam" (same elastic constants, dam
+//    material id), once with a mass-proportional rock damping (alpha = 5/s)
+//    and once stiffness proportional (zeta = 5 % at 10 Hz). The surface
+//    motion is compared with the closed form of the layered column: the
+//    incident wave g/2 of the undamped half-space below the bottom (what the
+//    boundary prescribes) through a Kelvin-Voigt / telegraph layer of
+//    complex wavenumber k = sqrt(rho (w^2 - i w alpha) / (G (1 + i w beta)))
+//    and the undamped layer to the free surface, summed over frequencies
+//    (Haskell's layer matrices, doc/verification.md). Tolerance 5 % of the
+//    pulse's peak, as B. The same comparison with the rock's damping over
+//    the whole column, and with none, must fail: the check sees where each
+//    material's damping acts.
 
 #include <archdam/physics/foundation/massed_foundation.h>
+
+#include <complex>
+#include <memory>
 
 #include "foundation_tests.h"
 
@@ -38,28 +55,38 @@ namespace
   struct Result
   {
     double reflected = 0., surface_error = 0.;
+    /// (t, u at the surface) after every step (seismic input)
+    std::vector<std::pair<double, double>> surface;
   };
 
+  /// With @p damping, the column's upper @p dam_layer metres are dam cells and
+  /// the damping matrix is assembled per material; else no damping.
   Result
-  run(const unsigned int component, const TransmittingBoundary boundary, const bool seismic)
+  run(const unsigned int component, const TransmittingBoundary boundary, const bool seismic,
+      const solid::DampingParameters *damping = nullptr, const double dam_layer = 0.)
   {
     foundation::FoundationParameters fp;
     fp.model                 = foundation::Model::massed;
     fp.transmitting_boundary = boundary;
     solid::MaterialParameters materials;
-    materials.rock = testing::test_rock();
+    materials.rock     = testing::test_rock();
+    materials.concrete = materials.rock;
     const double c = component == 2 ? foundation::pressure_wave_speed(materials.rock) :
                                       foundation::shear_wave_speed(materials.rock);
 
     parallel::shared::Triangulation<3> tria(MPI_COMM_WORLD);
     testing::rock_box(tria, Point<3>(0, 0, -H), Point<3>(w, w, 0), {1, 1, 40}, 0);
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->center()[2] > -dam_layer)
+        cell->set_material_id(ids::first_dam_block);
     fe::FiniteElementParameters fep;
     fe::FESpace                 space(tria, fep);
     space.setup(fp.fixed_boundaries(),
                 [&](AffineConstraints<double> &cons) { testing::tie_column(space, cons); });
 
-    archdam::SparseMatrix M, K;
-    solid::assemble_mass_and_stiffness(space, materials, solid::InertiaOf::dam_and_rock, M, K);
+    archdam::SparseMatrix M, K, D;
+    solid::assemble_mass_and_stiffness(space, materials, solid::InertiaOf::dam_and_rock, M, K,
+                                       damping, &D);
 
     std::array<foundation::ControlMotion, 3> control;
     if (seismic)
@@ -72,12 +99,16 @@ namespace
       }
     const foundation::FreeField free_field(control, materials.rock, 0., -H);
     const auto foundation_boundary = foundation::make_massed_foundation(fp, space, materials, solid::InertiaOf::dam_and_rock,
-                                        free_field, dt);
+                                        free_field, dt, damping);
     auto &massed = *foundation_boundary;
     massed.add_springs(K);
     time::NewmarkParameters tp;
     tp.time_step = dt;
-    time::NewmarkIntegrator newmark(tp, M, K, {0., 0.}, space.constraints, massed.dashpots());
+    const auto newmark =
+      damping ? std::make_unique<time::NewmarkIntegrator>(tp, M, D, K, space.constraints, true,
+                                                          massed.dashpots()) :
+                std::make_unique<time::NewmarkIntegrator>(tp, M, K, std::pair{0., 0.},
+                                                          space.constraints, massed.dashpots());
 
     time::NewmarkState s;
     for (archdam::Vector *v : {&s.u, &s.v, &s.a})
@@ -113,7 +144,7 @@ namespace
     Result r;
     for (unsigned int n = 1; n <= n_steps; ++n)
       {
-        massed.advance(newmark, load, s);
+        massed.advance(*newmark, load, s);
         const double E = testing::elastic_energy(M, K, space.constraints, s);
         E_max          = std::max(E_max, E);
         if (seismic)
@@ -122,11 +153,85 @@ namespace
               space.locally_owned.is_element(top) ? double(s.u(top)) : 0., MPI_COMM_WORLD);
             r.surface_error =
               std::max(r.surface_error, std::abs(u_top - g.value(s.time - H / c)) / g.A);
+            r.surface.emplace_back(s.time, u_top);
           }
         if (n == n_steps)
           r.reflected = E / E_max;
       }
     return r;
+  }
+
+  /**
+   * Part C's closed form: the surface motion of the column with an upper
+   * layer (thickness @p top, Rayleigh coefficients @p top_damping) on a lower
+   * one (to the bottom at -H, @p bottom_damping), over the undamped half-space
+   * from which the incident wave g/2 comes. For exp(i w t), a layer of
+   * G* = G (1 + i w beta) and k = sqrt(rho (w^2 - i w alpha) / G*) carries
+   * (u, tau) from its top to a depth h below as
+   *   u' = u cos(k h) - tau sin(k h) / (G* k),  tau' = G* k u sin(k h) + tau cos(k h);
+   * from (1, 0) at the free surface to (u_b, tau_b) at the bottom, the
+   * half-space's upgoing amplitude is A = (u_b + i tau_b / (k0 G)) / 2,
+   * k0 = w / c, so the surface moves as g^(w) / (2 A). The time history is
+   * u(t) = (1/pi) Re int_0^inf g^(w) / (2 A) exp(i w t) dw, summed at the
+   * mid-points of 8 s^-1 steps up to 300 Hz (g^ by the trapezoidal rule).
+   */
+  class LayeredColumn
+  {
+  public:
+    LayeredColumn(const solid::ElasticMaterial &rock, const double top,
+                  const std::pair<double, double> top_damping,
+                  const std::pair<double, double> bottom_damping)
+    {
+      using C             = std::complex<double>;
+      const double G      = rock.mu(), rho = rock.density, c = std::sqrt(G / rho);
+      const double period = 8., f_max = 300.;
+      dw                  = 2 * M_PI / period;
+      const unsigned int n_t = 2000;
+      for (unsigned int j = 0; (j + 0.5) * dw < 2 * M_PI * f_max; ++j)
+        {
+          const double w = (j + 0.5) * dw;
+          C            g_hat = 0.;
+          for (unsigned int m = 1; m < n_t; ++m) // g vanishes at both ends
+            {
+              const double t = m * g.T / n_t;
+              g_hat += g.value(t) * std::exp(C(0., -w * t)) * (g.T / n_t);
+            }
+          C u = 1., tau = 0.;
+          for (const auto &[h, d] : {std::pair{top, top_damping}, std::pair{H - top, bottom_damping}})
+            {
+              const C G_star = G * C(1., w * d.second);
+              const C k      = std::sqrt(rho * C(w * w, -w * d.first) / G_star);
+              const C u_next = u * std::cos(k * h) - tau * std::sin(k * h) / (G_star * k);
+              tau            = G_star * k * u * std::sin(k * h) + tau * std::cos(k * h);
+              u              = u_next;
+            }
+          const C A = 0.5 * (u + C(0., 1.) * tau / (w / c * G));
+          spectrum.emplace_back(w, g_hat / (2. * A));
+        }
+    }
+
+    double
+    surface(const double t) const
+    {
+      double u = 0.;
+      for (const auto &[w, s] : spectrum)
+        u += std::real(s * std::exp(std::complex<double>(0., w * t)));
+      return u * dw / M_PI;
+    }
+
+  private:
+    double                                               dw;
+    std::vector<std::pair<double, std::complex<double>>> spectrum;
+  };
+
+  /// max_t |u(t) - exact(t)| / max g over a surface history.
+  double
+  error_against(const Result &r, const LayeredColumn &exact)
+  {
+    double e = 0.;
+    for (const auto &[t, u] : r.surface)
+      e = std::max(e, std::abs(u - exact.surface(t)) / g.A);
+    return e;
   }
 } // namespace
 
@@ -165,5 +270,49 @@ main(int argc, char **argv)
                          << 100 * b.surface_error << " %, energy left " << 100 * b.reflected
                          << " %)" << std::defaultfloat << std::setprecision(6) << std::endl;
         }
+    }
+
+  // C. Damping per material.
+  const double dam_layer = 80.;
+  for (const bool stiffness : {false, true})
+    {
+      solid::DampingParameters dp; // the dam: undamped
+      dp.mode = solid::DampingMode::coefficients;
+      if (stiffness)
+        {
+          dp.rock.mode            = solid::DampingMode::stiffness_proportional;
+          dp.rock.ratio           = 0.05;
+          dp.rock.first_frequency = 10.;
+        }
+      else
+        {
+          dp.rock.mode  = solid::DampingMode::coefficients;
+          dp.rock.alpha = 5.;
+        }
+      const auto rock = dp.rock_coefficients(), none = std::pair{0., 0.};
+      testing::log() << "shear (SV) column, MTF boundary, seismic input, lower " << H - dam_layer
+                     << " m rock damped "
+                     << (stiffness ? "stiffness proportional (5 % at 10 Hz)" :
+                                     "mass proportional (alpha = 5 1/s)")
+                     << ", upper " << dam_layer << " m dam undamped:" << std::endl;
+      const Result r   = run(0, TransmittingBoundary::mtf, true, &dp, dam_layer);
+      const auto   rock_material = testing::test_rock();
+      const double e   = error_against(r, LayeredColumn(rock_material, dam_layer, none, rock));
+      testing::check_below("  max |u_surface - closed form| / max g", e, 0.05);
+      const double e_all = error_against(r, LayeredColumn(rock_material, dam_layer, rock, rock));
+      const double e_none = error_against(r, LayeredColumn(rock_material, dam_layer, none, none));
+      testing::log() << "  the closed form with the rock's damping in both layers is off by more "
+                        "than 5 %: "
+                     << (e_all > 0.05 ? "yes" : "NO") << std::endl
+                     << "  the undamped closed form is off by more than 5 %: "
+                     << (e_none > 0.05 ? "yes" : "NO") << std::endl;
+      double peak = 0.;
+      for (const auto &[t, u] : r.surface)
+        peak = std::max(peak, std::abs(u));
+      testing::log() << "  (peak surface displacement " << std::setprecision(2) << std::fixed
+                     << 100 * peak / g.A << " % of the control motion's; error " << 100 * e
+                     << " %, " << 100 * e_all << " % and " << 100 * e_none
+                     << " % against the closed forms damped in both layers and in none)"
+                     << std::defaultfloat << std::setprecision(6) << std::endl;
     }
 }

@@ -140,8 +140,8 @@ namespace
     void
     couple(const time::NewmarkParameters &tp, const std::pair<double, double> rayleigh)
     {
-      reservoir::form_coupled_system(ops, water.density, tp.beta2, tp.time_step, M, K, rayleigh,
-                                     coupled);
+      reservoir::form_coupled_system(ops, water.density, tp.beta2, tp.time_step, M, K,
+                                     {{rayleigh.first, &M}, {rayleigh.second, &K}}, coupled);
     }
 
     solid::MaterialParameters          materials;
@@ -234,13 +234,12 @@ namespace
                                                solid::InertiaOf::dam_and_rock, prescribed.dofs,
                                                prescribed.mass_columns,
                                                prescribed.stiffness_columns);
-    if (columns == Columns::without_water)
-      reservoir::linear_combination(prescribed.damping_columns,
-                                    {{rayleigh.first, &prescribed.mass_columns},
-                                     {rayleigh.second, &prescribed.stiffness_columns}});
-    else
+    reservoir::linear_combination(prescribed.damping_columns,
+                                  {{rayleigh.first, &prescribed.mass_columns},
+                                   {rayleigh.second, &prescribed.stiffness_columns}});
+    if (columns != Columns::without_water)
       reservoir::form_coupled_columns(m.space, m.pairs, m.water.density, tp.beta2,
-                                      tp.time_step, rayleigh, prescribed);
+                                      tp.time_step, prescribed);
     if (columns == Columns::without_damping)
       prescribed.damping_columns = 0.;
 

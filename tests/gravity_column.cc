@@ -301,6 +301,16 @@ namespace
   // Stepped blocks (see the top): heights in cells of h.
   const std::vector<unsigned int> block_cells = {10, 6, 8};
 
+  /// The corners of a hexahedron in Gmsh's order, as (i, j, k) offsets.
+  constexpr std::array<std::array<unsigned int, 3>, 8> hex_corners{{{{0, 0, 0}},
+                                                                    {{1, 0, 0}},
+                                                                    {{1, 1, 0}},
+                                                                    {{0, 1, 0}},
+                                                                    {{0, 0, 1}},
+                                                                    {{1, 0, 1}},
+                                                                    {{1, 1, 1}},
+                                                                    {{0, 1, 1}}}};
+
   /// Gmsh 2.2 text of the blocks side by side in y (block k in
   /// [k a, (k + 1) a]), physical volume 10 + k, their bases physical surface 1
   /// (fixed); neighbouring blocks share the nodes of their common face.
@@ -311,7 +321,8 @@ namespace
     std::map<std::array<unsigned int, 3>, unsigned int> tag;
     std::ostringstream nodes, elements;
     const auto node = [&](const unsigned int i, const unsigned int j, const unsigned int k) {
-      const auto [it, added] = tag.insert({{i, j, k}, tag.size() + 1});
+      const auto [it, added] =
+        tag.emplace(std::array<unsigned int, 3>{{i, j, k}}, static_cast<unsigned int>(tag.size() + 1));
       if (added)
         nodes << it->second << ' ' << i * a << ' ' << j * a << ' ' << k * h << "\n";
       return it->second;
@@ -322,14 +333,13 @@ namespace
         for (unsigned int k = 0; k < block_cells[b]; ++k)
           {
             elements << ++n_elements << " 5 2 " << 10 + b << " 1";
-            for (const auto &[i, j, l] : {std::array<unsigned int, 3>{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
-                                          {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}})
+            for (const auto &[i, j, l] : hex_corners)
               elements << ' ' << node(i, b + j, k + l);
             elements << "\n";
           }
         elements << ++n_elements << " 3 2 1 1";
-        for (const auto &[i, j] : {std::array<unsigned int, 2>{0, 0}, {1, 0}, {1, 1}, {0, 1}})
-          elements << ' ' << node(i, b + j, 0);
+        for (unsigned int c = 0; c < 4; ++c) // the hexahedron's base
+          elements << ' ' << node(hex_corners[c][0], b + hex_corners[c][1], 0);
         elements << "\n";
       }
     return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(tag.size()) +
@@ -354,7 +364,7 @@ namespace
       }
     MPI_Barrier(MPI_COMM_WORLD);
     // monitors in each block at 0.45, 0.7 and all of its height
-    const std::array<double, 3> heights = {0.45, 0.7, 1.};
+    const std::array<double, 3> heights = {{0.45, 0.7, 1.}};
     std::ostringstream           points;
     for (unsigned int b = 0; b < n; ++b)
       for (unsigned int i = 0; i < heights.size(); ++i)

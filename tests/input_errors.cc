@@ -99,6 +99,10 @@ main(int argc, char **argv)
   run_archdam("damping frequencies in the wrong order",
       {"good.prm", "--set", "Damping/Mode=damping ratio", "--set",
        "Damping/First frequency=20", "--set", "Damping/Second frequency=10"});
+  run_archdam("the rock's damping frequencies in the wrong order",
+      {"good.prm", "--set", "Damping/Rock/Mode=damping ratio", "--set",
+       "Damping/Rock/First frequency=20", "--set", "Damping/Rock/Second frequency=10"});
+  run_set("a rock damping mode misspelt", "Damping/Rock/Mode=same as dam");
   run_set("no stage to run", "Analysis/Stages=");
   run_set("an output directory inside a file", "Output/Directory=good.prm/results");
   run_set("a negative checkpoint interval", "Checkpoints/Interval (steps)=-5");

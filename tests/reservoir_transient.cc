@@ -81,7 +81,7 @@ namespace
     time::NewmarkParameters np;
     np.time_step = dt;
     reservoir::CoupledSystem sys;
-    reservoir::form_coupled_system(ops, rp.density, np.beta2, dt, M, K, {0., 0.}, sys);
+    reservoir::form_coupled_system(ops, rp.density, np.beta2, dt, M, K, {{0., &M}, {0., &K}}, sys);
     time::NewmarkIntegrator newmark(np, sys.mass, sys.damping, sys.stiffness, space.constraints,
                                     false);
     time::NewmarkState s;

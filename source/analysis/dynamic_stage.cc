@@ -32,9 +32,10 @@ namespace archdam::analysis
 
   /**
    * The energy balance of the dynamic stage (doc/theory/results.md §7) on the
-   * operators the integrator steps: the solid's M, K and Rayleigh damping or
-   * the coupled dam-water system's M, D, K (made with the integrator), the
-   * water's operators, and the foundation's boundary.
+   * operators the integrator steps: the solid's M, K and Rayleigh damping (or
+   * the damping matrix assembled per material), or the coupled dam-water
+   * system's M, D, K (made with the integrator), the water's operators, and
+   * the foundation's boundary.
    */
   std::unique_ptr<EnergyBalance>
   Simulation::make_energy_balance() const
@@ -43,8 +44,7 @@ namespace archdam::analysis
     operators.space     = &model().space();
     operators.mass      = coupled ? &coupled->mass : &model().mass();
     operators.stiffness = coupled ? &coupled->stiffness : &model().stiffness();
-    if (coupled)
-      operators.damping = &coupled->damping;
+    operators.damping   = coupled ? &coupled->damping : model().damping();
     operators.rayleigh  = p.damping.rayleigh_coefficients();
     operators.newmark   = p.time_integration;
     operators.fluid     = model().fluid();
@@ -64,19 +64,25 @@ namespace archdam::analysis
   {
     const auto rayleigh = p.damping.rayleigh_coefficients();
     const double dt     = p.time_integration.time_step;
+    // The solid's damping (doc/theory/solid.md §4): alpha M + beta K, or the
+    // matrix assembled with each material's coefficients.
+    const SparseMatrix *D = model().damping();
     if (model().fluid())
       {
         // The coupled dam-water system, symmetric indefinite (paper eq. 3.2).
         coupled = std::make_unique<physics::reservoir::CoupledSystem>();
-        physics::reservoir::form_coupled_system(*model().fluid(), p.reservoir.density,
-                                                p.time_integration.beta2, dt, model().mass(),
-                                                model().stiffness(), rayleigh, *coupled);
+        physics::reservoir::form_coupled_system(
+          *model().fluid(), p.reservoir.density, p.time_integration.beta2, dt, model().mass(),
+          model().stiffness(),
+          D ? physics::reservoir::MatrixTerms{{1., D}} :
+              physics::reservoir::MatrixTerms{{rayleigh.first, &model().mass()},
+                                              {rayleigh.second, &model().stiffness()}},
+          *coupled);
         // A prescribed outer boundary drives the water too (doc/theory/foundation.md §7).
         if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
           physics::reservoir::form_coupled_columns(model().space(), model().interface_pairs(),
                                                    p.reservoir.density,
-                                                   p.time_integration.beta2, dt, rayleigh,
-                                                   *boundary);
+                                                   p.time_integration.beta2, dt, *boundary);
         // The coupled system's solid blocks are M, D and K: no matrix held twice.
         built_model->release_solid_matrices();
         return std::make_unique<time::NewmarkIntegrator>(
@@ -84,6 +90,10 @@ namespace archdam::analysis
           model().space().constraints, false, foundation() ? foundation()->dashpots() : nullptr,
           condensed_interface());
       }
+    if (D)
+      return std::make_unique<time::NewmarkIntegrator>(
+        p.time_integration, model().mass(), *D, model().stiffness(), model().space().constraints,
+        true, foundation() ? foundation()->dashpots() : nullptr, condensed_interface());
     return std::make_unique<time::NewmarkIntegrator>(
       p.time_integration, model().mass(), model().stiffness(), rayleigh,
       model().space().constraints, foundation() ? foundation()->dashpots() : nullptr,
@@ -194,7 +204,11 @@ namespace archdam::analysis
       integrator->release_effective_matrix();
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
-           << " 1/s, beta = " << rayleigh.second << " s)" << std::endl;
+           << " 1/s, beta = " << rayleigh.second << " s";
+    if (!p.damping.uniform())
+      screen << "; rock: alpha = " << p.damping.rock_coefficients().first
+             << " 1/s, beta = " << p.damping.rock_coefficients().second << " s";
+    screen << ")" << std::endl;
 
     if (foundation())
       foundation()->start(current.u);
@@ -347,6 +361,11 @@ namespace archdam::analysis
     summary.set("dynamic/beta2", p.time_integration.beta2);
     summary.set("dynamic/rayleigh alpha [s^-1]", rayleigh.first);
     summary.set("dynamic/rayleigh beta [s]", rayleigh.second);
+    if (!p.damping.uniform())
+      {
+        summary.set("dynamic/rock rayleigh alpha [s^-1]", p.damping.rock_coefficients().first);
+        summary.set("dynamic/rock rayleigh beta [s]", p.damping.rock_coefficients().second);
+      }
     const double steps_run = std::max(n_run, 1u); // steps of this run (a resume: since it)
     summary.set("dynamic/wall time per step [s]", wall_time / steps_run);
     if (foundation())
@@ -383,6 +402,8 @@ namespace archdam::analysis
     const std::string s = "dynamic/memory [MB]/";
     if (model().mass().m() > 0)
       summary.set(s + "solid M and K", megabytes({&model().mass(), &model().stiffness()}));
+    if (const SparseMatrix *D = model().damping())
+      summary.set(s + "solid D", megabytes({D}));
     if (const auto *water = model().fluid())
       summary.set(s + "water G, H, Q, S, S^T",
                   megabytes({&water->G, &water->H, &water->Q, &water->S, &water->S_transpose}));

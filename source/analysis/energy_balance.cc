@@ -125,8 +125,9 @@ namespace archdam::analysis
   {
     // The force the exterior applies to the prescribed DOFs b to move them:
     // (M a + D v + K u)_b of the full operators (the water's pressure on b
-    // is counted with the water's balance below).
-    const auto [alpha, beta] = m.rayleigh;
+    // is counted with the water's balance below). D is alpha M + beta K, or
+    // a general damping matrix with its own columns.
+    const auto [alpha, beta] = m.damping ? std::pair<double, double>{0., 0.} : m.rayleigh;
     free_part(s.a, work);
     free_part(s.v, tmp2);
     work.add(alpha, tmp2);
@@ -135,6 +136,12 @@ namespace archdam::analysis
     work.add(beta, tmp2);
     m.prescribed->stiffness_columns.vmult(tmp2, work);
     out += tmp2;
+    if (m.damping)
+      {
+        free_part(s.v, work);
+        m.prescribed->damping_columns.vmult(tmp2, work);
+        out += tmp2;
+      }
     out.scale(prescribed_mask);
   }
 

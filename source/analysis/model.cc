@@ -105,12 +105,25 @@ namespace archdam::analysis
 
     const auto inertia = p.foundation.rock_has_mass() ? physics::solid::InertiaOf::dam_and_rock :
                                                         physics::solid::InertiaOf::dam;
+    // D is assembled only when dam and rock are damped differently.
+    const bool per_material = !p.damping.uniform();
     physics::solid::assemble_mass_and_stiffness(*fe_space, p.materials, inertia, mass_matrix,
-                                                stiffness_matrix);
+                                                stiffness_matrix,
+                                                per_material ? &p.damping : nullptr,
+                                                per_material ? &damping_matrix : nullptr);
     const double level =
       water == reservoir::Model::none ? 0. : reservoir::water_level(p.reservoir, mesh);
     if (water == reservoir::Model::westergaard)
-      reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
+      {
+        reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
+        // The added mass moves with the dam: the dam's alpha damps it (alpha M
+        // of the whole model when the damping is uniform).
+        if (per_material)
+          reservoir::add_westergaard_mass(*fe_space,
+                                          p.damping.rayleigh_coefficients().first *
+                                            p.reservoir.density,
+                                          level, damping_matrix);
+      }
     if (p.reservoir.has_pressure())
       {
         fluid_operators = std::make_unique<reservoir::FluidOperators>();
@@ -160,8 +173,12 @@ namespace archdam::analysis
     free_field = std::make_unique<physics::foundation::FreeField>(
       physics::foundation::FreeField::of_ground_motion(*motion, p.materials.rock, z_top,
                                                        z_bottom));
+    // The integrator with a general damping matrix (the coupled dam-water
+    // system's, or the one assembled per material) needs its columns too.
+    const bool general_damping = p.reservoir.has_pressure() || !p.damping.uniform();
     massed_foundation = physics::foundation::make_massed_foundation(
-      p.foundation, *fe_space, p.materials, inertia, *free_field, p.time_integration.time_step);
+      p.foundation, *fe_space, p.materials, inertia, *free_field, p.time_integration.time_step,
+      general_damping ? &p.damping : nullptr);
     massed_foundation->add_springs(stiffness_matrix);
     using physics::foundation::TransmittingBoundary;
     const TransmittingBoundary boundary = p.foundation.transmitting_boundary;

@@ -108,7 +108,7 @@ namespace archdam
     {
       p.time_integration.check();
       p.reservoir.check();
-      p.damping.rayleigh_coefficients();
+      p.damping.check();
       output::parse_monitor_points(p.monitors.points);
       if (p.analysis.stages.empty())
         throw InputError("Analysis/Stages: nothing to run.");

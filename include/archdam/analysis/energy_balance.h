@@ -107,10 +107,11 @@ namespace archdam::analysis
     {
       const fe::FESpace                         *space = nullptr;
       const SparseMatrix                        *mass = nullptr, *stiffness = nullptr;
-      /// The damping matrix whose solid block is alpha M + beta K (the
-      /// coupled system's; with a prescribed boundary its columns are
-      /// PrescribedDofs::damping_columns): one product a step. Null: the
-      /// two products alpha M v + beta K v.
+      /// The damping matrix whose solid block is the solid's D (the coupled
+      /// system's, or the solid's assembled per material; with a prescribed
+      /// boundary its columns are PrescribedDofs::damping_columns): one
+      /// product a step. Null: the two products alpha M v + beta K v with
+      /// `rayleigh`.
       const SparseMatrix                        *damping = nullptr;
       std::pair<double, double>                  rayleigh{0., 0.};
       time::NewmarkParameters                    newmark;

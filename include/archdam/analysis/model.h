@@ -65,14 +65,23 @@ namespace archdam::analysis
     {
       return stiffness_matrix;
     }
-    /// Free M and K, once a system that holds them in its blocks (the
+    /// The damping matrix D assembled with each material's coefficients
+    /// (doc/theory/solid.md §4) when the rock has a damping of its own, else
+    /// null: D = alpha M + beta K of the whole model, never assembled.
+    const SparseMatrix *
+    damping() const
+    {
+      return damping_matrix.m() > 0 ? &damping_matrix : nullptr;
+    }
+    /// Free M, D and K, once a system that holds them in its blocks (the
     /// coupled dam-water system) replaces them for the rest of the run:
-    /// mass() and stiffness() are empty from then on.
+    /// mass(), damping() and stiffness() are empty from then on.
     void
     release_solid_matrices()
     {
       mass_matrix.clear();
       stiffness_matrix.clear();
+      damping_matrix.clear();
     }
     /// F_static: self-weight and hydrostatic pressure as the case asks.
     const Vector &
@@ -147,7 +156,8 @@ namespace archdam::analysis
     dealii::parallel::shared::Triangulation<dim>           mesh;
     std::vector<joints::JointFacePair>                     joint_faces;
     std::unique_ptr<fe::FESpace>                           fe_space;
-    SparseMatrix                                           mass_matrix, stiffness_matrix;
+    SparseMatrix                                           mass_matrix, stiffness_matrix,
+      damping_matrix;
     Vector                                                 static_forces, weight_forces;
     std::array<Vector, dim>                                influence;
     std::vector<physics::reservoir::InterfacePair>         interfaces;

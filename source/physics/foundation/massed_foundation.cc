@@ -26,7 +26,8 @@ namespace archdam::physics::foundation
                          const solid::MaterialParameters &materials,
                          const solid::InertiaOf           inertia,
                          const FreeField                 &free_field,
-                         const double                     time_step)
+                         const double                     time_step,
+                         const solid::DampingParameters  *damping)
         : boundary(p, space, materials, free_field, time_step)
         , transmitting(p.transmitting_boundary == TransmittingBoundary::mtf)
         , order(p.mtf_order)
@@ -35,7 +36,8 @@ namespace archdam::physics::foundation
         prescribed.dofs = boundary.dofs();
         solid::assemble_mass_and_stiffness_columns(space, materials, inertia, prescribed.dofs,
                                                    prescribed.mass_columns,
-                                                   prescribed.stiffness_columns);
+                                                   prescribed.stiffness_columns, damping,
+                                                   &prescribed.damping_columns);
       }
 
       time::PrescribedDofs *
@@ -196,11 +198,12 @@ namespace archdam::physics::foundation
                          const solid::MaterialParameters &materials,
                          const solid::InertiaOf           inertia,
                          const FreeField                 &free_field,
-                         const double                     time_step)
+                         const double                     time_step,
+                         const solid::DampingParameters  *damping)
   {
     if (p.transmitting_boundary == TransmittingBoundary::viscous)
       return std::make_unique<ViscousBoundary>(p, space, materials, free_field, time_step);
     return std::make_unique<PrescribedBoundary>(p, space, materials, inertia, free_field,
-                                                time_step);
+                                                time_step, damping);
   }
 } // namespace archdam::physics::foundation

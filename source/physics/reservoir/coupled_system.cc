@@ -7,8 +7,7 @@ namespace archdam::physics::reservoir
   using namespace dealii;
 
   void
-  linear_combination(SparseMatrix                                                  &out,
-                     std::initializer_list<std::pair<double, const SparseMatrix *>> terms)
+  linear_combination(SparseMatrix &out, const MatrixTerms &terms)
   {
     // The sum takes the pattern of the term with the most entries, the
     // model's (fe::FESpace::reinit); a term on that pattern is added entry by
@@ -35,13 +34,14 @@ namespace archdam::physics::reservoir
                       const double                    dt,
                       const SparseMatrix             &M,
                       const SparseMatrix             &K,
-                      const std::pair<double, double> rayleigh,
+                      const MatrixTerms              &solid_damping,
                       CoupledSystem                  &system)
   {
     const double phi = -beta2 * dt * dt / density; // paper eq. 3.2
     linear_combination(system.mass, {{1., &M}, {phi, &ops.S}, {phi, &ops.G}});
-    linear_combination(system.damping,
-                       {{rayleigh.first, &M}, {rayleigh.second, &K}, {phi, &ops.H}});
+    MatrixTerms damping = solid_damping;
+    damping.emplace_back(phi, &ops.H);
+    linear_combination(system.damping, damping);
     linear_combination(system.stiffness,
                        {{1., &K}, {-1. / density, &ops.S_transpose}, {phi, &ops.Q}});
     for (unsigned int d = 0; d < dim; ++d)
@@ -57,13 +57,9 @@ namespace archdam::physics::reservoir
                        const double                      density,
                        const double                      beta2,
                        const double                      dt,
-                       const std::pair<double, double>   rayleigh,
                        time::PrescribedDofs             &prescribed)
   {
     const double phi = -beta2 * dt * dt / density; // paper eq. 3.2, as above
-    linear_combination(prescribed.damping_columns,
-                       {{rayleigh.first, &prescribed.mass_columns},
-                        {rayleigh.second, &prescribed.stiffness_columns}});
     SparseMatrix S_columns;
     assemble_coupling_columns(space, density, pairs, prescribed.dofs, S_columns);
     // The solid's columns and S's have different patterns: PETSc merges them.

@@ -1,4 +1,5 @@
 #include <archdam/base/input_error.h>
+#include <archdam/geometry/ids.h>
 #include <archdam/physics/solid/damping.h>
 
 #include <cmath>
@@ -7,12 +8,29 @@ namespace archdam::physics::solid
 {
   using namespace dealii;
 
-  void
-  DampingParameters::add_parameters(ParameterHandler &prm)
+  const SelectionNames<DampingMode> &
+  damping_mode_names(const bool rock)
   {
-    add_selection(prm, "Mode", mode, damping_mode_names(),
-                  "How Rayleigh damping is given: 'damping ratio' (zeta at "
-                  "two frequencies) or 'coefficients' (alpha and beta).");
+    static const SelectionNames<DampingMode> dam{
+      {"damping ratio", DampingMode::damping_ratio},
+      {"stiffness proportional", DampingMode::stiffness_proportional},
+      {"coefficients", DampingMode::coefficients}};
+    static const SelectionNames<DampingMode> with_same = [] {
+      auto names = dam;
+      names.insert(names.begin(), {"same as the dam", DampingMode::same_as_dam});
+      return names;
+    }();
+    return rock ? with_same : dam;
+  }
+
+  void
+  RayleighDamping::add_parameters(ParameterHandler &prm, const bool rock)
+  {
+    add_selection(prm, "Mode", mode, damping_mode_names(rock),
+                  std::string("How the Rayleigh damping is given: 'damping ratio' (zeta at "
+                              "two frequencies), 'stiffness proportional' (zeta at the first "
+                              "frequency, no mass term) or 'coefficients' (alpha and beta)") +
+                    (rock ? "; 'same as the dam' takes the dam's coefficients." : "."));
     prm.add_parameter("Mass proportional coefficient", alpha,
                       "Rayleigh alpha [1/s] (Mode = coefficients).",
                       Patterns::Double(0.));
@@ -21,26 +39,77 @@ namespace archdam::physics::solid
                       Patterns::Double(0.));
     prm.add_parameter("Damping ratio", ratio,
                       "Fraction of critical damping zeta reached at both "
-                      "frequencies (Mode = damping ratio).",
+                      "frequencies (Mode = damping ratio) or at the first one "
+                      "(Mode = stiffness proportional).",
                       Patterns::Double(0., 1.));
     prm.add_parameter("First frequency", first_frequency,
                       "Lower frequency f1 [Hz] with damping ratio zeta.",
                       Patterns::Double(0., Patterns::Double::max_double_value));
     prm.add_parameter("Second frequency", second_frequency,
-                      "Upper frequency f2 [Hz] with damping ratio zeta.",
+                      "Upper frequency f2 [Hz] with damping ratio zeta (Mode = damping ratio).",
                       Patterns::Double(0., Patterns::Double::max_double_value));
+  }
+
+  std::pair<double, double>
+  RayleighDamping::coefficients(const std::string &section) const
+  {
+    const double w1 = 2 * M_PI * first_frequency, w2 = 2 * M_PI * second_frequency;
+    switch (mode)
+      {
+        case DampingMode::coefficients:
+          return {alpha, beta};
+        case DampingMode::stiffness_proportional:
+          return {0., 2 * ratio / w1};
+        case DampingMode::damping_ratio:
+          if (!(first_frequency < second_frequency))
+            throw InputError(section + ": 'First frequency' (" + std::to_string(first_frequency) +
+                             " Hz) must be below 'Second frequency' (" +
+                             std::to_string(second_frequency) + " Hz).");
+          return {2 * ratio * w1 * w2 / (w1 + w2), 2 * ratio / (w1 + w2)};
+        case DampingMode::same_as_dam:
+          break;
+      }
+    throw InputError(section + ": Mode = same as the dam has no coefficients of its own.");
+  }
+
+  void
+  DampingParameters::add_parameters(ParameterHandler &prm)
+  {
+    RayleighDamping::add_parameters(prm, false);
+    prm.enter_subsection("Rock");
+    rock.add_parameters(prm, true);
+    prm.leave_subsection();
+  }
+
+  void
+  DampingParameters::check() const
+  {
+    rayleigh_coefficients();
+    rock_coefficients();
   }
 
   std::pair<double, double>
   DampingParameters::rayleigh_coefficients() const
   {
-    if (mode == DampingMode::coefficients)
-      return {alpha, beta};
-    if (!(first_frequency < second_frequency))
-      throw InputError("Damping: 'First frequency' (" + std::to_string(first_frequency) +
-                       " Hz) must be below 'Second frequency' (" +
-                       std::to_string(second_frequency) + " Hz).");
-    const double w1 = 2 * M_PI * first_frequency, w2 = 2 * M_PI * second_frequency;
-    return {2 * ratio * w1 * w2 / (w1 + w2), 2 * ratio / (w1 + w2)};
+    return coefficients("Damping");
+  }
+
+  std::pair<double, double>
+  DampingParameters::rock_coefficients() const
+  {
+    return rock.mode == DampingMode::same_as_dam ? rayleigh_coefficients() :
+                                                   rock.coefficients("Damping/Rock");
+  }
+
+  bool
+  DampingParameters::uniform() const
+  {
+    return rock_coefficients() == rayleigh_coefficients();
+  }
+
+  std::pair<double, double>
+  DampingParameters::of(const types::material_id id) const
+  {
+    return ids::is_dam(id) ? rayleigh_coefficients() : rock_coefficients();
   }
 } // namespace archdam::physics::solid

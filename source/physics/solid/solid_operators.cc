@@ -23,7 +23,9 @@ namespace archdam::physics::solid
   namespace
   {
     /// Add the cell matrices of M and K of the solid cells for which
-    /// @p take(cell) holds, condensed with @p constraints, to the matrices.
+    /// @p take(cell) holds, condensed with @p constraints, to the matrices,
+    /// and with @p damping those of D = alpha_c M_c + beta_c K_c, each cell
+    /// with its material's coefficients, to @p damping_matrix.
     template <typename CellFilter>
     void
     add_cell_matrices(const fe::FESpace               &space,
@@ -32,11 +34,13 @@ namespace archdam::physics::solid
                       const AffineConstraints<double> &constraints,
                       const CellFilter                &take,
                       SparseMatrix                    &mass,
-                      SparseMatrix                    &stiffness)
+                      SparseMatrix                    &stiffness,
+                      const DampingParameters         *damping        = nullptr,
+                      SparseMatrix                    *damping_matrix = nullptr)
     {
       hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
                                      update_values | update_gradients | update_JxW_values);
-      FullMatrix<double>                   cell_m, cell_k;
+      FullMatrix<double>                   cell_m, cell_k, cell_d;
       std::vector<types::global_dof_index> dofs;
       std::vector<SymmetricTensor<2, dim>> eps;
       std::vector<double>                  div;
@@ -85,9 +89,19 @@ namespace archdam::physics::solid
                 }
             constraints.distribute_local_to_global(cell_m, dofs, mass);
             constraints.distribute_local_to_global(cell_k, dofs, stiffness);
+            if (damping)
+              {
+                const auto [alpha, beta] = damping->of(cell->material_id());
+                cell_d                   = cell_m;
+                cell_d *= alpha;
+                cell_d.add(beta, cell_k);
+                constraints.distribute_local_to_global(cell_d, dofs, *damping_matrix);
+              }
           }
       mass.compress(VectorOperation::add);
       stiffness.compress(VectorOperation::add);
+      if (damping)
+        damping_matrix->compress(VectorOperation::add);
     }
   } // namespace
 
@@ -96,13 +110,17 @@ namespace archdam::physics::solid
                               const MaterialParameters &materials,
                               const InertiaOf           inertia,
                               SparseMatrix             &mass,
-                              SparseMatrix             &stiffness)
+                              SparseMatrix             &stiffness,
+                              const DampingParameters  *damping,
+                              SparseMatrix             *damping_matrix)
   {
     space.reinit(stiffness);
     mass.reinit(stiffness); // the same pattern: Kbar = c1 M + c2 K relies on it
+    if (damping)
+      damping_matrix->reinit(stiffness);
     add_cell_matrices(space, materials, inertia, space.constraints,
                       [](const std::vector<types::global_dof_index> &) { return true; },
-                      mass, stiffness);
+                      mass, stiffness, damping, damping_matrix);
   }
 
   void
@@ -111,7 +129,9 @@ namespace archdam::physics::solid
                                       const InertiaOf                             inertia,
                                       const std::vector<types::global_dof_index> &columns,
                                       SparseMatrix                               &mass,
-                                      SparseMatrix                               &stiffness)
+                                      SparseMatrix                               &stiffness,
+                                      const DampingParameters                    *damping,
+                                      SparseMatrix                               *damping_columns)
   {
     std::vector<bool> is_column(space.dof_handler.n_dofs(), false);
     for (const auto i : columns)
@@ -144,7 +164,10 @@ namespace archdam::physics::solid
     SparsityTools::distribute_sparsity_pattern(dsp, space.locally_owned, space.comm, rows);
     stiffness.reinit(space.locally_owned, space.locally_owned, dsp, space.comm);
     mass.reinit(stiffness);
-    add_cell_matrices(space, materials, inertia, others, touches, mass, stiffness);
+    if (damping)
+      damping_columns->reinit(stiffness);
+    add_cell_matrices(space, materials, inertia, others, touches, mass, stiffness, damping,
+                      damping_columns);
   }
 
   void

@@ -86,12 +86,16 @@ namespace archdam::physics::foundation
   };
 
   /// The massed foundation with the outer boundary @p p chooses
-  /// (Foundation/Transmitting boundary), for time step @p time_step.
+  /// (Foundation/Transmitting boundary), for time step @p time_step. With
+  /// @p damping a prescribed boundary also holds the columns of the damping
+  /// matrix (time::PrescribedDofs::damping_columns), for an integrator with
+  /// a general damping matrix.
   std::unique_ptr<MassedFoundation>
   make_massed_foundation(const FoundationParameters      &p,
                          const fe::FESpace               &space,
                          const solid::MaterialParameters &materials,
                          solid::InertiaOf                 inertia,
                          const FreeField                 &free_field,
-                         double                           time_step);
+                         double                           time_step,
+                         const solid::DampingParameters  *damping = nullptr);
 } // namespace archdam::physics::foundation

@@ -3,35 +3,35 @@
 #include <archdam/base/selection.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
 
 #include <string>
+#include <utility>
 
 namespace archdam::physics::solid
 {
-  /// `Damping/Mode`: how the Rayleigh damping is given.
+  /// `Damping/Mode` (and `Damping/Rock/Mode`): how a Rayleigh damping is given.
   enum class DampingMode
   {
-    damping_ratio, ///< zeta at two frequencies
-    coefficients   ///< alpha and beta
+    damping_ratio,          ///< zeta at two frequencies
+    stiffness_proportional, ///< zeta at one frequency, beta K only
+    coefficients,           ///< alpha and beta
+    same_as_dam             ///< the rock only: the dam's coefficients
   };
 
-  /// The names of DampingMode in the case file.
-  inline const SelectionNames<DampingMode> &
-  damping_mode_names()
-  {
-    static const SelectionNames<DampingMode> names{
-      {"damping ratio", DampingMode::damping_ratio},
-      {"coefficients", DampingMode::coefficients}};
-    return names;
-  }
+  /// The names of DampingMode in the case file: the dam's choices, and with
+  /// @p rock also "same as the dam".
+  const SelectionNames<DampingMode> &
+  damping_mode_names(bool rock);
 
   /**
-   * Rayleigh damping D = alpha M + beta K (doc/theory/solid.md §4), with alpha and beta
-   * given directly or derived from a damping ratio zeta reached at two
-   * frequencies f1, f2: alpha = 2 zeta w1 w2 / (w1 + w2), beta = 2 zeta / (w1 + w2)
-   * (Chopra, Dynamics of Structures, eq. 11.4.9).
+   * One Rayleigh damping D = alpha M + beta K (doc/theory/solid.md §4), with
+   * alpha and beta given directly, derived from a damping ratio zeta reached
+   * at two frequencies f1, f2: alpha = 2 zeta w1 w2 / (w1 + w2),
+   * beta = 2 zeta / (w1 + w2) (Chopra, Dynamics of Structures, eq. 11.4.9),
+   * or stiffness proportional with zeta at f1: alpha = 0, beta = 2 zeta / w1.
    */
-  struct DampingParameters
+  struct RayleighDamping
   {
     DampingMode mode             = DampingMode::damping_ratio;
     double      alpha            = 0.;
@@ -41,10 +41,45 @@ namespace archdam::physics::solid
     double      second_frequency = 10.;
 
     void
+    add_parameters(dealii::ParameterHandler &prm, bool rock);
+
+    /// (alpha [1/s], beta [s]); @p section names it in messages. Not for
+    /// Mode = same as the dam.
+    std::pair<double, double>
+    coefficients(const std::string &section) const;
+  };
+
+  /**
+   * The `Damping` section: the Rayleigh damping of the dam's concrete (its
+   * entries), which is also the rock's unless the subsection `Rock` gives
+   * the rock its own (doc/theory/solid.md §4). The damping matrix is
+   * assembled cell by cell with the coefficients of each cell's material.
+   */
+  struct DampingParameters : RayleighDamping
+  {
+    RayleighDamping rock{DampingMode::same_as_dam};
+
+    void
     add_parameters(dealii::ParameterHandler &prm);
 
-    /// (alpha [1/s], beta [s]) for the chosen mode.
+    /// Both coefficient pairs can be formed (an input error names the one that cannot).
+    void
+    check() const;
+
+    /// The dam's (alpha [1/s], beta [s]).
     std::pair<double, double>
     rayleigh_coefficients() const;
+
+    /// The rock's (alpha [1/s], beta [s]).
+    std::pair<double, double>
+    rock_coefficients() const;
+
+    /// Dam and rock damped alike: D = alpha M + beta K of the whole model.
+    bool
+    uniform() const;
+
+    /// The coefficients of a solid cell of material @p id.
+    std::pair<double, double>
+    of(dealii::types::material_id id) const;
   };
 } // namespace archdam::physics::solid

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/physics/solid/damping.h>
 #include <archdam/physics/solid/materials.h>
 
 #include <deal.II/base/tensor.h>
@@ -18,21 +19,28 @@ namespace archdam::physics::solid
    * Consistent mass M = int rho N^T N and stiffness
    * K = int (lambda div N div N + 2 mu eps(N) : eps(N)) of the solid cells
    * (doc/theory/solid.md §3), assembled with the model's constraints (constrained rows
-   * and columns condensed, so the step unknowns there stay zero).
+   * and columns condensed, so the step unknowns there stay zero). With
+   * @p damping, also the damping matrix D = sum over the cells of
+   * alpha_c M_c + beta_c K_c with the coefficients of each cell's material
+   * (doc/theory/solid.md §4), on the same pattern, into @p damping_matrix.
    */
   void
   assemble_mass_and_stiffness(const fe::FESpace          &space,
                               const MaterialParameters   &materials,
                               InertiaOf                   inertia,
                               SparseMatrix               &mass,
-                              SparseMatrix               &stiffness);
+                              SparseMatrix               &stiffness,
+                              const DampingParameters    *damping        = nullptr,
+                              SparseMatrix               *damping_matrix = nullptr);
 
   /**
    * The full (unconstrained) columns of M and K at the constrained DOFs
    * @p columns: the entries of the cells touching them, condensed with the
    * model's constraints other than the lines of @p columns. They carry the
    * coupling of prescribed DOFs to the free ones (time::PrescribedDofs);
-   * their other entries are partial and never used.
+   * their other entries are partial and never used. With @p damping, also
+   * the columns of the damping matrix D (assemble_mass_and_stiffness) into
+   * @p damping_columns.
    */
   void
   assemble_mass_and_stiffness_columns(const fe::FESpace                                  &space,
@@ -40,7 +48,9 @@ namespace archdam::physics::solid
                                       InertiaOf                                           inertia,
                                       const std::vector<dealii::types::global_dof_index> &columns,
                                       SparseMatrix                                       &mass,
-                                      SparseMatrix                                       &stiffness);
+                                      SparseMatrix                                       &stiffness,
+                                      const DampingParameters *damping         = nullptr,
+                                      SparseMatrix            *damping_columns = nullptr);
 
   /**
    * The load of a uniform acceleration field b acting on the mass of the chosen
