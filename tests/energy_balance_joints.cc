@@ -8,8 +8,9 @@
 // References, written here independently of the program:
 //  - the joint dissipates mu N times the slip: N = m g the weight, the slip
 //    the FE block's (it slides one way only); within 0.5 % (the normal
-//    force varies by the block's rocking, the pair forces are averaged by
-//    the trapezoidal rule);
+//    force varies by the block's rocking); the joints' pair forces act as
+//    the default step impulse (doc/theory/joints.md §10), here with the
+//    Beta1 = 0.6 whose dissipation is checked below;
 //  - the rigid block (Newmark 1965): the ground puts in
 //    W = m A g (A - mu) g t0^2 / 2 while the block slides during the pulse,
 //    and all of it goes into friction once the block is at rest again

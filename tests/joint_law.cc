@@ -4,8 +4,9 @@
 // kg) on a fixed base block (block 0) across one horizontal joint (mu = 0.5,
 // c = sigma_t = 1e4 Pa, residual values 0), loaded by a
 // uniform vertical body force F(t) (no gravity), mixed method with Kbar
-// (Beta1 = 0.6 damps the block's own vibration, whose period is far below
-// dt). The block is stiff (E = 1e11 Pa), so the joint force follows the load
+// (the trapezoidal pair forces with Beta1 = 0.6, which damps the block's own
+// vibration, whose period is far below dt; item 5 also runs the step impulse
+// with Beta1 = 1/2). The block is stiff (E = 1e11 Pa), so the joint force follows the load
 // while the joint is closed: sum f_xi = F (quasi-static, the ramps take 20
 // steps). References written here:
 //  1. F = 0.3 sigma_t A: the intact joint holds, sum f_xi = F (tolerance 2 %
@@ -18,8 +19,13 @@
 //     carries tension any more (the intact joint carried 0.3 sigma_t in 1.).
 //  5. An initial gap delta_0 = 1 mm under a downward acceleration a = 1 m/s^2
 //     closes at t = sqrt(2 delta_0 / a) (Newmark is exact for a constant
-//     acceleration: the step that contains it), and the block
-//     never penetrates (gap >= -Gap tolerance).
+//     acceleration: the step that contains it), with both schemes of the
+//     pair forces in time (doc/theory/joints.md §10): with the trapezoidal
+//     forces the block never penetrates (gap >= -Gap tolerance); with the
+//     step impulse (a closed pair holds its velocity, not its position) it
+//     penetrates by at most dt / 2 times the impact velocity a t. A pair
+//     starts open where its joint has a gap (held closed in the air, the
+//     step impulse would keep the block from falling).
 //  6. Oblique slip: under its weight W (mu = 0.5, c = 0) the block gets a
 //     horizontal load 0.8 W at 30 degrees from x: it slides along the load
 //     (isotropic friction) with acceleration (0.8 - 0.5) g, slip 0.3 g t^2 / 2
@@ -48,6 +54,18 @@ using namespace archdam;
 
 namespace
 {
+  /// The joint of these tests: frictional contact, its pair forces in time
+  /// as chosen (the law is the same with both schemes; Run takes each with
+  /// its Newmark rule).
+  joints::JointParameters
+  frictional(const joints::ContactInTime contact = joints::ContactInTime::trapezoidal)
+  {
+    joints::JointParameters jp;
+    jp.model           = joints::Model::frictional_contact;
+    jp.contact_in_time = contact;
+    return jp;
+  }
+
   struct Run
   {
     testing::BlockModel               m{2, 2, Point<dim>(1., 1., 2.), 1, 1, 1e11, 0.2, 2400., {0}};
@@ -68,8 +86,9 @@ namespace
                                               d == 0 ? iota_x : d == 1 ? iota_y : iota_z);
       time::NewmarkParameters np;
       np.time_step = dt;
-      np.beta1     = 0.6;
-      np.beta2     = 0.3025;
+      const bool impulse = jp.contact_in_time == joints::ContactInTime::step_impulse;
+      np.beta1           = impulse ? 0.5 : 0.6;
+      np.beta2           = impulse ? 0.25 : 0.3025;
       newmark = std::make_unique<time::NewmarkIntegrator>(np, m.M, m.K, std::pair<double, double>{alpha, 0.},
                                                           m.space->constraints);
       solver  = joints::make_joint_solver(jp, *m.pairs, newmark->displacement_factor(),
@@ -141,8 +160,7 @@ main(int argc, char **argv)
   const double                     dt = 1e-3, sigma_t = 1e4, A = 1.;
 
   {
-    joints::JointParameters jp;
-    jp.model                    = joints::Model::frictional_contact;
+    auto jp = frictional();
     jp.law.friction_coefficient = 0.5;
     jp.law.tensile_strength     = sigma_t;
     jp.law.cohesion             = sigma_t; // shear capacity c - mu f_xi > 0 up to sigma_t
@@ -194,33 +212,38 @@ main(int argc, char **argv)
     log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO") << std::endl;
   }
 
-  {
-    joints::JointParameters jp;
-    jp.model                    = joints::Model::frictional_contact;
-    jp.law.friction_coefficient = 0.5;
-    jp.law.initial_gap          = 1e-3;
-    Run          r(jp, dt);
-    const double a = 1., m = 2400.;
-    double       t_close = 0., lowest = 1e300;
-    r.s.a = r.m.uniform_field(1, 2, -a); // the load acts from t = 0
-    for (unsigned int k = 1; k <= 100; ++k)
-      {
-        r.step(-m * a);
-        lowest = std::min(lowest, r.min_gap());
-        if (t_close == 0. && !r.all(joints::PairState::separation))
-          t_close = r.t;
-      }
-    log << "5. initial gap 1 mm under 1 m/s^2:" << std::endl;
-    const double t_ref = std::sqrt(2e-3 / a);
-    log << "  closes in the step containing sqrt(2 delta_0 / a): "
-        << (t_close >= t_ref && t_close - dt < t_ref ? "yes" : "NO") << std::endl;
-    log << "  no penetration: " << (lowest >= -1e-9 ? "yes" : "NO") << std::endl;
-    log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO") << std::endl;
-  }
+  for (const auto contact : {joints::ContactInTime::trapezoidal, joints::ContactInTime::step_impulse})
+    {
+      auto jp                     = frictional(contact);
+      jp.law.friction_coefficient = 0.5;
+      jp.law.initial_gap          = 1e-3;
+      Run          r(jp, dt);
+      const double a = 1., m = 2400.;
+      double       t_close = 0., lowest = 1e300;
+      r.s.a = r.m.uniform_field(1, 2, -a); // the load acts from t = 0
+      for (unsigned int k = 1; k <= 100; ++k)
+        {
+          r.step(-m * a);
+          lowest = std::min(lowest, r.min_gap());
+          if (t_close == 0. && !r.all(joints::PairState::separation))
+            t_close = r.t;
+        }
+      log << "5. initial gap 1 mm under 1 m/s^2, "
+          << (contact == joints::ContactInTime::trapezoidal ? "trapezoidal forces" : "step impulse")
+          << ":" << std::endl;
+      const double t_ref = std::sqrt(2e-3 / a);
+      log << "  closes in the step containing sqrt(2 delta_0 / a): "
+          << (t_close >= t_ref && t_close - dt < t_ref ? "yes" : "NO") << std::endl;
+      if (contact == joints::ContactInTime::trapezoidal)
+        log << "  no penetration: " << (lowest >= -1e-9 ? "yes" : "NO") << std::endl;
+      else
+        testing::check_below("  penetration [m] against dt / 2 times the impact velocity a t",
+                             -lowest, 0.5 * dt * a * t_ref);
+      log << "  contact problem converged every step: " << (r.converged ? "yes" : "NO") << std::endl;
+    }
 
   {
-    joints::JointParameters jp;
-    jp.model                    = joints::Model::frictional_contact;
+    auto jp = frictional();
     jp.law.friction_coefficient = 0.5;
     Run          r(jp, dt);
     const double g = 9.81, W = 2400. * g, theta = M_PI / 6, T = 0.1;
@@ -242,8 +265,7 @@ main(int argc, char **argv)
   // 7. The softening shear key against Mohr-Coulomb after the same opening.
   for (const auto law : {joints::Law::softening_shear_key, joints::Law::mohr_coulomb})
     {
-      joints::JointParameters jp;
-      jp.model                    = joints::Model::frictional_contact;
+      auto jp = frictional();
       jp.strength_law             = law;
       jp.law.friction_coefficient = 0.5;
       jp.law.tensile_strength     = sigma_t;

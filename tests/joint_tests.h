@@ -72,7 +72,7 @@ namespace archdam::testing
       space->reinit(v);
       std::vector<dealii::types::global_dof_index> dofs;
       for (const auto &cell : space->dof_handler.active_cell_iterators())
-        if (block < 0 || cell->material_id() == 10 + block)
+        if (block < 0 || cell->material_id() == static_cast<dealii::types::material_id>(10 + block))
           {
             dofs.resize(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_indices(dofs);

@@ -51,8 +51,9 @@ namespace archdam::analysis
                "With Contraction joints/Grouting = after self-weight the static stage first "
                "solves the self-weight on the ungrouted blocks with K") +
       ", which has no inverse for such a block (doc/theory/joints.md §8). Use Contraction "
-      "joints/Solver = monolithic with Grouting = before self-weight (the default), whose "
-      "penalty springs hold the block on its joints, or tie the block to the rock.");
+      "joints/Solver = monolithic with Grouting = before self-weight (the default) and "
+      "Contact in time = trapezoidal, whose penalty springs hold the block on its joints, or "
+      "tie the block to the rock.");
   }
 
   Model::Model(const Parameters &p, const MPI_Comm comm, const ConditionalOStream &screen,

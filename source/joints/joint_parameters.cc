@@ -55,9 +55,10 @@ namespace archdam::joints
                   "(the paper's scheme; a pair that opens works against the opening "
                   "with half its last force and puts energy into the dam); step "
                   "impulse = one force over the whole step, the closed pairs holding "
-                  "their relative velocity at the step's end at zero: a step cannot "
-                  "create energy at the joints, and persistent contact does not "
-                  "chatter. Step impulse needs the mixed solver.");
+                  "their relative velocity at the step's end at zero (the default): a "
+                  "step cannot create energy at the joints, and persistent contact "
+                  "does not chatter; it needs the mixed solver, and with it use the "
+                  "average acceleration rule (Beta1 = 0.5, Beta2 = 0.25).");
     add_selection(prm, "Grouting", grouting, grouting_names(),
                   "When the static stage grouts the joints (doc/theory/loading-sequence.md "
                   "§1): before self-weight = the whole static load on the grouted dam at "

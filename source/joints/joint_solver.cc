@@ -28,6 +28,14 @@ namespace archdam::joints
   {
     for (unsigned int i = 0; i < pairs.size(); ++i)
       laws.push_back(p.law_of(pairs[i].joint));
+    set_initial_states();
+  }
+
+  void
+  JointSolver::set_initial_states()
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      state[i] = laws[i].initial_gap > 0. ? PairState::separation : PairState::stick;
   }
 
   void
@@ -65,7 +73,7 @@ namespace archdam::joints
     pairs.relative_displacement(u, w_grouted);
     for (auto *v : {&force, &force_committed, &pair_load, &load_committed, &w, &w_committed})
       std::fill(v->begin(), v->end(), 0.);
-    std::fill(state.begin(), state.end(), PairState::stick);
+    set_initial_states();
     std::fill(damaged.begin(), damaged.end(), false);
     std::fill(largest_opening.begin(), largest_opening.end(), 0.);
   }
@@ -137,6 +145,10 @@ namespace archdam::joints
   {
     if (p.contact_in_time != ContactInTime::step_impulse)
       return;
+    // the monolithic reference holds positions only (parameters::check
+    // refuses it with the step impulse in a dynamic stage)
+    AssertThrow(p.solver == Solver::mixed,
+                ExcMessage("The step impulse needs the mixed joint solver."));
     omega = newmark.time_step() / newmark.velocity_factor();
     Vector x(newmark.predicted_displacement());
     x.add(-newmark.displacement_factor() / newmark.velocity_factor(),

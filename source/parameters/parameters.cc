@@ -112,12 +112,13 @@ namespace archdam
       output::parse_monitor_points(p.monitors.points);
       if (p.analysis.stages.empty())
         throw InputError("Analysis/Stages: nothing to run.");
-      if (p.joints.frictional() &&
+      if (p.joints.frictional() && p.analysis.runs("dynamic") &&
           p.joints.contact_in_time == joints::ContactInTime::step_impulse &&
           p.joints.solver != joints::Solver::mixed)
         throw InputError("Contraction joints/Contact in time = step impulse needs Solver = "
                          "mixed (the monolithic reference solver holds the pairs at their "
-                         "positions only).");
+                         "positions only): with Solver = monolithic, set Contact in time = "
+                         "trapezoidal.");
       // The static loads are applied in the static stage only, and the
       // dynamic stage starts from its state: without it they would be lost.
       if (p.analysis.runs("dynamic") && !p.analysis.runs("static"))

@@ -166,7 +166,7 @@ namespace archdam::joints
     Coupling    coupling     = Coupling::all_joints;
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     Law           strength_law = Law::mohr_coulomb;
-    ContactInTime contact_in_time = ContactInTime::trapezoidal;
+    ContactInTime contact_in_time = ContactInTime::step_impulse;
     Grouting      grouting        = Grouting::before_self_weight;
     LawParameters law;
     /// "k: name = value, ...; ..." overrides of the law for single joints

@@ -167,6 +167,11 @@ namespace archdam::joints
     /// directions from the committed tangential forces.
     void
     start_solve();
+    /// Every pair closed (stick), but open where its joint has an initial
+    /// gap: a closed pair must touch, because with the step impulse it holds
+    /// only its velocity (doc/theory/joints.md §10).
+    void
+    set_initial_states();
     /// pair_load = omega force - (omega - 1) load_committed.
     void
     set_load();
