@@ -84,11 +84,7 @@ namespace
                                               physics::solid::InertiaOf::dam,
                                               Point<dim>::unit_vector(d),
                                               d == 0 ? iota_x : d == 1 ? iota_y : iota_z);
-      time::NewmarkParameters np;
-      np.time_step = dt;
-      const bool impulse = jp.contact_in_time == joints::ContactInTime::step_impulse;
-      np.beta1           = impulse ? 0.5 : 0.6;
-      np.beta2           = impulse ? 0.25 : 0.3025;
+      const time::NewmarkParameters np = testing::newmark_for(jp.contact_in_time, dt);
       newmark = std::make_unique<time::NewmarkIntegrator>(np, m.M, m.K, std::pair<double, double>{alpha, 0.},
                                                           m.space->constraints);
       solver  = joints::make_joint_solver(jp, *m.pairs, newmark->displacement_factor(),
@@ -319,8 +315,11 @@ main(int argc, char **argv)
           }
         const double expected = sigma_t * A * strength_left(r);
         if (softening)
-          testing::check_relative("  load when the joint opens again [N]", F_open, expected,
-                                  0.02);
+          // Without the value: the ramp's step (0.5 % of sigma_t A) puts the
+          // reference between two load levels, so round-off decides which one.
+          testing::check_below("  load when the joint opens again, relative error against "
+                               "sigma_t (1 - kappa / delta_s) A,",
+                               std::abs(F_open - expected) / expected, 0.02);
         else
           log << "  opens at once (residual tensile strength 0), F = " << F_open << " N: "
               << (F_open <= 0.02 * sigma_t * A ? "yes" : "NO") << " (at most 0.02 sigma_t A)"

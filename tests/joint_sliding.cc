@@ -121,11 +121,7 @@ namespace
     // t = settle.
     time::NewmarkState s;
     m.space->reinit(s.u);
-    time::NewmarkParameters np;
-    np.time_step = dt;
-    const bool impulse = scheme.contact == joints::ContactInTime::step_impulse;
-    np.beta1           = impulse ? 0.5 : 0.6;
-    np.beta2           = impulse ? 0.25 : 0.3025;
+    const time::NewmarkParameters np = testing::newmark_for(scheme.contact, dt);
     // condensed: Kbar factorized with the pair DOFs last (Contraction
     // joints/Mixed method solves = condensed on the pairs), else plainly
     // (the predictor and corrector).

@@ -7,6 +7,7 @@
 #include <archdam/geometry/splitter.h>
 #include <archdam/joints/joint_solver.h>
 #include <archdam/physics/solid/solid_operators.h>
+#include <archdam/time/newmark.h>
 
 #include <deal.II/grid/grid_generator.h>
 
@@ -95,5 +96,22 @@ namespace archdam::testing
     for (unsigned int i = 0; i < s.pairs.size(); ++i)
       sum += s.force[dim * i];
     return sum;
+  }
+
+  /**
+   * The Newmark rule the joint tests pair with each scheme of the pair
+   * forces in time (doc/theory/joints.md §10): the average acceleration rule
+   * with the step impulse, Beta1 = 0.6 (and Beta2 = (Beta1 + 1/2)^2 / 4) with
+   * the trapezoidal forces, which need its numerical damping.
+   */
+  inline time::NewmarkParameters
+  newmark_for(const joints::ContactInTime contact, const double dt)
+  {
+    time::NewmarkParameters np;
+    np.time_step       = dt;
+    const bool impulse = contact == joints::ContactInTime::step_impulse;
+    np.beta1           = impulse ? 0.5 : 0.6;
+    np.beta2           = impulse ? 0.25 : 0.3025;
+    return np;
   }
 } // namespace archdam::testing
