@@ -42,7 +42,8 @@ namespace archdam::testing
     if (pid == 0)
       {
         setpgid(0, 0);
-        std::freopen(log.c_str(), "w", stdout);
+        if (!std::freopen(log.c_str(), "w", stdout))
+          _exit(127);
         // one open file for both: with two, a later write to stdout would
         // overwrite what stderr appended (the error message)
         dup2(fileno(stdout), fileno(stderr));

@@ -319,7 +319,7 @@ namespace
                                    g.first(t - (2 * (n + 1) * b.Hw - z) / c_w));
       return rho_w * c_w * p;
     };
-    const std::array<double, 2> z{0., b.Hw / 2};
+    const std::array<double, 2> z{{0., b.Hw / 2}};
     std::array<types::global_dof_index, 2> dof;
     for (unsigned int k = 0; k < 2; ++k)
       dof[k] = pressure_dof_at(m.space, Point<3>(0, 0, z[k]));

@@ -148,10 +148,12 @@ namespace
     s << e++ << " 15 2 0 1 " << node_tag(0, 0, 0) << "\n";
     for (unsigned int j = 0; j < ny; ++j)
       for (unsigned int i = 0; i < nx; ++i)
-        s << e++ << " 3 2 1 1 " << node_tag(i, j, 0) << " " << node_tag(i, j + 1, 0) << " "
-          << node_tag(i + 1, j + 1, 0) << " " << node_tag(i + 1, j, 0) << "\n"
-          << e++ << " 3 2 0 2 " << node_tag(i, j, nz) << " " << node_tag(i + 1, j, nz) << " "
-          << node_tag(i + 1, j + 1, nz) << " " << node_tag(i, j + 1, nz) << "\n";
+        {
+          s << e++ << " 3 2 1 1 " << node_tag(i, j, 0) << " " << node_tag(i, j + 1, 0) << " "
+            << node_tag(i + 1, j + 1, 0) << " " << node_tag(i + 1, j, 0) << "\n";
+          s << e++ << " 3 2 0 2 " << node_tag(i, j, nz) << " " << node_tag(i + 1, j, nz) << " "
+            << node_tag(i + 1, j + 1, nz) << " " << node_tag(i, j + 1, nz) << "\n";
+        }
     for (unsigned int k = 0; k < nz; ++k)
       for (unsigned int j = 0; j < ny; ++j)
         for (unsigned int i = 0; i < nx; ++i)

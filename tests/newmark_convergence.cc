@@ -174,10 +174,11 @@ main(int argc, char **argv)
           const double ratio = errors[k - 1] / errors[k];
           // Second order gives 4, first order 2; the finest steps have
           // w3 dt < 0.05, where the next term of the error is below 1 %, so
-          // +-5 % separates the orders safely.
+          // +-5 % separates the orders safely. Two digits: the third
+          // (2.01 or 2.02 with Beta1 = 0.6) depends on the machine's round-off.
           const double expected = beta1 == 0.5 ? 4. : 2.;
           testing::check_relative("  error ratio dt/dt/2, step " + std::to_string(k), ratio,
-                                  expected, 0.05, 3);
+                                  expected, 0.05, 2);
         }
     }
 

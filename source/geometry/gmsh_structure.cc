@@ -204,7 +204,7 @@ namespace archdam::geometry
             std::sort(edges.begin(), edges.end());
             auto &face = faces[key];
             if (face.line == 0)
-              face = {edges, line};
+              face = {edges, line, {}};
             else if (face.edges != edges)
               words.fail("this element and the one at line " + std::to_string(face.line) +
                          " have a face on the same nodes " + nodes_text(key) +

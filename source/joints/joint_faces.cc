@@ -81,7 +81,7 @@ namespace archdam::joints
           for (int dy = -1; dy <= 1 && !found; ++dy)
             for (int dz = -1; dz <= 1 && !found; ++dz)
               {
-                const auto it = side_1.find({k[0] + dx, k[1] + dy, k[2] + dz});
+                const auto it = side_1.find({{k[0] + dx, k[1] + dy, k[2] + dz}});
                 if (it == side_1.end())
                   continue;
                 for (const auto &one : it->second)

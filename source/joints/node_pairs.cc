@@ -25,7 +25,7 @@ namespace archdam::joints
         std::abs(xi[2]) < 0.9 ? Point<dim>::unit_vector(2) : Point<dim>::unit_vector(0);
       Tensor<1, dim> eta = cross_product_3d(helper, xi);
       eta /= eta.norm();
-      return {xi, eta, cross_product_3d(xi, eta)};
+      return {{xi, eta, cross_product_3d(xi, eta)}};
     }
   } // namespace
 
@@ -54,7 +54,7 @@ namespace archdam::joints
         for (int dy = -1; dy <= 1; ++dy)
           for (int dz = -1; dz <= 1; ++dz)
             {
-              const auto it = buckets.find({k[0] + dx, k[1] + dy, k[2] + dz});
+              const auto it = buckets.find({{k[0] + dx, k[1] + dy, k[2] + dz}});
               if (it != buckets.end())
                 for (const unsigned int i : it->second)
                   if (pairs[i].position.distance(p) < tol)

@@ -179,7 +179,7 @@ namespace archdam::output
   std::string
   CheckpointFiles::newest() const
   {
-    for (const std::string dir : {directory + "/checkpoint", directory + "/checkpoint.old"})
+    for (const std::string &dir : {directory + "/checkpoint", directory + "/checkpoint.old"})
       if (fs::exists(dir + "/manifest.txt"))
         return dir;
     return "";

@@ -1,0 +1,127 @@
+#!/usr/bin/python3
+"""Mesh convergence study of the reference case (doc/convergence.md).
+
+The reference case prm/paper_235m_dam.prm on a sequence of meshes, the same
+motion and time step on each:
+
+  coarse      Q1, 1 cell across each block, 1 through the thickness, 4 over the height
+  q2-113      Q2, 1 x 1 x 3
+  production  Q2, 2 x 2 x 6 (the case file as written)
+  fine        Q2, 3 x 3 x 9
+  (rock and water cell sizes as in the case file: the rock and water meshes
+  follow the dam's cells at the interfaces and grade to 45 m and 35 m away
+  from it)
+  rockNN      the q2-113 dam with the rock's cell size NN m instead of 45 m
+              (the rock's own sensitivity: rock60, rock35; 30 m cells put
+              a point of the MTF outside the rock at 5 ms)
+
+For each mesh three runs (each kept when its summary.json exists):
+
+  dynamic         the case as shipped (static stage, then the motion) up to
+                  --end-time, the static field written (stresses at the crown)
+  modal_massed    the first five modes of the grouted dam (joints glued) with
+                  the compressible water on the massed rock
+  modal_massless  the same on the massless rock (the dam-water modes alone)
+
+then the tables (Markdown) and one figure per quantity against the DOFs.
+
+Usage (from the project root):
+  /usr/bin/python3 scripts/convergence-study.py run MESH[,MESH...] [--what dynamic,modal_massed,modal_massless]
+  /usr/bin/python3 scripts/convergence-study.py report [--figures doc/figures/convergence]
+options: --results DIR (default results/convergence), --archdam build/archdam,
+         --end-time S (default 8: the window of every peak, doc/convergence.md)
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+import time
+
+MESHES = {
+    # name: (degree, across each block, through thickness, over height)
+    "coarse": (1, 1, 1, 4),
+    "q2-113": (2, 1, 1, 3),
+    "production": (2, 2, 2, 6),
+    "fine": (2, 3, 3, 9),
+}
+# uniformly refined Q2 meshes: observed orders and Richardson estimates
+SERIES = ["q2-113", "production", "fine"]
+RUNS = ["dynamic", "modal_massed", "modal_massless"]
+
+
+def mesh_settings(mesh):
+    if mesh.startswith("rock"):
+        # rockNN: the q2-113 dam with a rock cell size of NN m
+        degree, nb, nt, nz = MESHES["q2-113"]
+        extra = [f"Mesh/Arch dam/Rock cell size={mesh[4:]}"]
+    else:
+        degree, nb, nt, nz = MESHES[mesh]
+        extra = []
+    return [
+        f"Finite element/Degree={degree}",
+        f"Mesh/Arch dam/Cells across each block={nb}",
+        f"Mesh/Arch dam/Cells through thickness={nt}",
+        f"Mesh/Arch dam/Cells over height={nz}",
+    ] + extra
+
+
+def run_settings(what, end_time):
+    if what == "dynamic":
+        # the static state is written as the dynamic stage's first field
+        return [f"Time integration/End time={end_time}", "Output/Field output interval=1000000"]
+    foundation = "massed" if what == "modal_massed" else "massless"
+    return [
+        "Analysis/Stages=modal",
+        "Contraction joints/Model=glued",
+        f"Foundation/Model={foundation}",
+        "Modal analysis/Number of modes=5",
+        "Modal analysis/Write mode shapes=false",
+    ]
+
+
+def run(args, mesh, what):
+    out = os.path.join(args.results, mesh, what)
+    if os.path.exists(os.path.join(out, "summary.json")):
+        print(f"{mesh}/{what}: kept ({out}/summary.json exists)")
+        return
+    os.makedirs(out, exist_ok=True)
+    command = [args.archdam, "prm/paper_235m_dam.prm", "--set", f"Output/Directory={out}"]
+    for s in mesh_settings(mesh) + run_settings(what, args.end_time):
+        command += ["--set", s]
+    # /usr/bin/time -v: the peak resident memory of the run
+    command = ["/usr/bin/time", "-v", "-o", os.path.join(out, "time.txt")] + command
+    print(f"{mesh}/{what}: running", flush=True)
+    start = time.time()
+    with open(os.path.join(out, "run.log"), "w") as log:
+        status = subprocess.call(command, stdout=log, stderr=subprocess.STDOUT)
+    print(f"{mesh}/{what}: exit {status} after {time.time() - start:.0f} s", flush=True)
+    if status != 0:
+        sys.exit(f"{mesh}/{what}: archdam failed; see {out}/run.log")
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("command", choices=["run", "report"])
+    p.add_argument("meshes", nargs="?", default=",".join(MESHES))
+    p.add_argument("--what", default=",".join(RUNS))
+    p.add_argument("--results", default="results/convergence")
+    p.add_argument("--archdam", default="build/archdam")
+    p.add_argument("--end-time", default="8")
+    p.add_argument("--figures", default=None, help="report: write the figures here")
+    args = p.parse_args()
+    if args.command == "run":
+        for mesh in args.meshes.split(","):
+            for what in args.what.split(","):
+                run(args, mesh, what)
+    else:
+        import convergence_report
+
+        convergence_report.report(args, MESHES, SERIES)
+
+
+if __name__ == "__main__":
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    main()

@@ -1,0 +1,295 @@
+"""Tables and figures of the mesh convergence study (scripts/convergence-study.py report).
+
+Reads results/convergence/<mesh>/<run>/, writes the tables to
+convergence_tables.txt there (and the screen) and the figures
+convergence_{static,modal,dynamic}.png there or into --figures.
+"""
+import csv
+import json
+import math
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+# The crown block (block 7, next to the crown joint at y = 0) at the
+# monitors' y, near the crest and at mid-height, on both faces (not at the
+# base: the heel and the toe are re-entrant corners whose stress is
+# singular and does not converge).
+CROWN_Y = -11.0
+CROWN_HEIGHTS = {"crest (z = 225 m)": 225.0, "mid-height (z = 117.5 m)": 117.5}
+
+
+def flatten(d, prefix=""):
+    out = {}
+    for k, v in d.items():
+        if isinstance(v, dict):
+            out.update(flatten(v, prefix + k + "/"))
+        else:
+            out[prefix + k] = v
+    return out
+
+
+def read_csv(path):
+    with open(path) as f:
+        rows = list(csv.reader(f))
+    return {h: [float(r[i]) for r in rows[1:]] for i, h in enumerate(rows[0])}
+
+
+def time_txt(path):
+    """Wall time [s] and peak resident memory [GB] from /usr/bin/time -v."""
+    wall = rss = float("nan")
+    if os.path.exists(path):
+        for line in open(path):
+            if "Elapsed (wall clock)" in line:
+                parts = [float(x) for x in line.split()[-1].split(":")]
+                wall = sum(p * 60 ** i for i, p in enumerate(reversed(parts)))
+            if "Maximum resident set size" in line:
+                rss = float(line.split()[-1]) / 1024 ** 2
+    return wall, rss
+
+
+def total_dofs(directory):
+    """The model's DOFs (the run's "Mesh: ..., N DOFs" line: the dam-rock
+    interface nodes counted once)."""
+    for line in open(os.path.join(directory, "run.log")):
+        if line.startswith("Mesh:") and line.rstrip().endswith("DOFs"):
+            return int(line.split(",")[-1].split()[0])
+    raise RuntimeError(f"{directory}/run.log: no mesh line")
+
+
+def crown_stresses(directory):
+    """Static arch (horizontal, along the arch) and cantilever (vertical)
+    stress at the crown block's faces, from the static field
+    (solution_00000.pvtu: the dam's own cells, the face found along x)."""
+    import vtk
+    from vtk.util.numpy_support import vtk_to_numpy
+
+    reader = vtk.vtkXMLPUnstructuredGridReader()
+    reader.SetFileName(os.path.join(directory, "solution_00000.pvtu"))
+    reader.Update()
+    dam = vtk.vtkThreshold()
+    dam.SetInputConnection(reader.GetOutputPort())
+    dam.SetInputArrayToProcess(0, 0, 0, vtk.vtkDataObject.FIELD_ASSOCIATION_POINTS, "material_id")
+    dam.SetLowerThreshold(9.5)
+    dam.SetUpperThreshold(1e9)
+    dam.Update()
+    locator = vtk.vtkCellLocator()
+    locator.SetDataSet(dam.GetOutput())
+    locator.BuildLocator()
+    grid = dam.GetOutput()
+
+    def probe(points):
+        pts = vtk.vtkPoints()
+        for p in points:
+            pts.InsertNextPoint(*p)
+        poly = vtk.vtkPolyData()
+        poly.SetPoints(pts)
+        f = vtk.vtkProbeFilter()
+        f.SetInputData(poly)
+        f.SetSourceData(grid)
+        f.Update()
+        out = f.GetOutput()
+        valid = vtk_to_numpy(out.GetPointData().GetArray("vtkValidPointMask"))
+        stress = vtk_to_numpy(out.GetPointData().GetArray("stress"))
+        return valid, stress
+
+    def faces(y, z):
+        xs = [-80.0 + 0.05 * i for i in range(3200)]
+        valid, _ = probe([(x, y, z) for x in xs])
+        inside = [x for x, v in zip(xs, valid) if v]
+        return min(inside), max(inside)
+
+    result = {}
+    for label, z in CROWN_HEIGHTS.items():
+        up, down = faces(CROWN_Y, z)
+        # the arch's horizontal tangent at the crown block, from the upstream face
+        up_minus, _ = faces(CROWN_Y - 1.0, z)
+        up_plus, _ = faces(CROWN_Y + 1.0, z)
+        t = (up_plus - up_minus, 2.0, 0.0)
+        n = math.hypot(t[0], t[1])
+        t = (t[0] / n, t[1] / n, 0.0)
+        inset = 0.01 * (down - up)
+        valid, stress = probe([(up + inset, CROWN_Y, z), (down - inset, CROWN_Y, z)])
+        for face, s in zip(["upstream", "downstream"], stress):
+            S = [[s[3 * i + j] for j in range(3)] for i in range(3)]
+            arch = sum(t[i] * S[i][j] * t[j] for i in range(3) for j in range(3))
+            result[f"arch stress, {label}, {face} [MPa]"] = arch / 1e6
+            result[f"cantilever stress, {label}, {face} [MPa]"] = S[2][2] / 1e6
+    return result
+
+
+def collect(results, mesh):
+    """Every quantity of the study for one mesh (missing runs left out)."""
+    q, info = {}, {}
+    d = os.path.join(results, mesh, "dynamic")
+    if os.path.exists(os.path.join(d, "summary.json")):
+        s = flatten(json.load(open(os.path.join(d, "summary.json"))))
+        info["DOFs"] = total_dofs(d)
+        info["node pairs"] = sum(
+            v for k, v in s.items() if k.startswith("mesh/joints/") and k.endswith("node pairs")
+        )
+        info["wall time, dynamic run [s]"], info["peak memory, dynamic run [GB]"] = time_txt(
+            os.path.join(d, "time.txt")
+        )
+        info["end time [s]"] = s["dynamic/end time [s]"]
+        q["static: crest - base, x [mm]"] = 1e3 * (s["static/crest.ux [m]"] - s["static/base.ux [m]"])
+        openings = [s[f"static/joints/joint {j}/peak opening [m]"] for j in range(13)]
+        j = max(range(13), key=lambda k: openings[k])
+        q["static: largest joint opening [mm]"] = 1e3 * openings[j]
+        info["static: most open joint"] = j
+        q.update({"static: " + k: v for k, v in crown_stresses(d).items()})
+        h = read_csv(os.path.join(d, "histories.csv"))
+        jh = read_csv(os.path.join(d, "joint_histories_dynamic.csv"))
+        for c in ["x", "y"]:
+            rel = [a - b for a, b in zip(h[f"crest.u{c} [m]"], h[f"base.u{c} [m]"])]
+            q[f"peak crest - base (magnitude), {c} [mm]"] = 1e3 * max(abs(v) for v in rel)
+        q["peak s1 at C [MPa]"] = max(h["C.s1 [Pa]"]) / 1e6
+        q["peak opening at A [mm]"] = 1e3 * max(jh["A.opening [m]"])
+        q["peak opening at B [mm]"] = 1e3 * max(jh["B.opening [m]"])
+        openings = [s[f"dynamic/joints/joint {j}/peak opening [m]"] for j in range(13)]
+        j = max(range(13), key=lambda k: openings[k])
+        q["peak opening, most open joint [mm]"] = 1e3 * openings[j]
+        info["dynamic: most open joint"] = j
+        q["energy balance error"] = s["energy balance/balance error"]
+    for run, label in [("modal_massed", "massed rock"), ("modal_massless", "massless rock")]:
+        d = os.path.join(results, mesh, run)
+        if os.path.exists(os.path.join(d, "summary.json")):
+            s = flatten(json.load(open(os.path.join(d, "summary.json"))))
+            for k in range(1, 6):
+                q[f"f{k}, water, {label} [Hz]"] = s[f"modal/mode {k}/frequency [Hz]"]
+            if "DOFs" not in info:
+                info["DOFs"] = total_dofs(d)
+                info["node pairs"] = sum(
+                    v for k, v in s.items() if k.startswith("mesh/joints/") and k.endswith("node pairs")
+                )
+    return q, info
+
+
+def observed_order(f1, f2, f3, h1, h2, h3):
+    """Order p of f(h) = f* + C h^p through three meshes of sizes h1 > h2 > h3
+    (bisection on the ratio of differences; None when not monotone)."""
+    d12, d23 = f1 - f2, f2 - f3
+    if d12 == 0 or d23 == 0 or d12 * d23 <= 0:
+        return None
+
+    def g(p):
+        return (h1 ** p - h2 ** p) / (h2 ** p - h3 ** p) - d12 / d23
+
+    lo, hi = 0.05, 12.0
+    if g(lo) * g(hi) > 0:
+        return None
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if g(lo) * g(mid) <= 0:
+            hi = mid
+        else:
+            lo = mid
+    return 0.5 * (lo + hi)
+
+
+def percent(a, b):
+    return 100.0 * (a - b) / abs(b) if b else float("nan")
+
+
+def report(args, meshes, series):
+    """meshes: name -> (degree, across, thickness, height), coarsest first;
+    series: three uniformly refined meshes (h ~ 1 / cells over height), for
+    the observed order and the Richardson estimate."""
+    data = {m: collect(args.results, m) for m in meshes if os.path.isdir(os.path.join(args.results, m))}
+    names = [m for m in data if data[m][0]]
+    out_dir = args.figures or args.results
+    os.makedirs(out_dir, exist_ok=True)
+    lines = ["| mesh | degree | cells across × thickness × height | DOFs | node pairs | "
+             "dynamic run: wall time [min], peak memory [GB] |", "|---|---|---|---|---|---|"]
+    for m in names:
+        deg, nb, nt, nz = meshes[m]
+        info = data[m][1]
+        run = (
+            f"{info['wall time, dynamic run [s]'] / 60:.1f}, {info['peak memory, dynamic run [GB]']:.1f}"
+            if "wall time, dynamic run [s]" in info
+            else "not run"
+        )
+        lines.append(
+            f"| {m} | Q{deg} | {nb} × {nt} × {nz} | {info['DOFs']:,} | {info.get('node pairs', '–')} | {run} |"
+        )
+    quantities = []
+    for m in names:
+        for k in data[m][0]:
+            if k not in quantities:
+                quantities.append(k)
+    header = "| quantity | " + " | ".join(names) + " | finest with the quantity | each coarser mesh against it [%] | "
+    header += f"observed order ({', '.join(series)}) | Richardson estimate | {series[1]} against it [%] |"
+    lines += ["", header, "|---" * (len(names) + 6) + "|"]
+    for k in quantities:
+        values = [data[m][0].get(k) for m in names]
+        have = [m for m in names if k in data[m][0]]
+        finest = have[-1]
+        f = data[finest][0][k]
+        # the balance error is round-off: its relative changes mean nothing
+        errors = "–" if k.startswith("energy") else ", ".join(
+            f"{percent(data[m][0][k], f):+.1f}" for m in have[:-1]
+        )
+        order = estimate = against = "–"
+        if not k.startswith("energy") and all(m in data and k in data[m][0] for m in series):
+            f1, f2, f3 = (data[m][0][k] for m in series)
+            h1, h2, h3 = (1.0 / meshes[m][3] for m in series)
+            p = observed_order(f1, f2, f3, h1, h2, h3)
+            if p is not None:
+                fe = f3 + (f3 - f2) / ((h2 / h3) ** p - 1.0)
+                order, estimate, against = f"{p:.2f}", f"{fe:.4g}", f"{percent(f2, fe):+.1f}"
+            else:
+                order = "not monotone"
+        cells = " | ".join(f"{v:.4g}" if v is not None else "–" for v in values)
+        lines.append(f"| {k} | {cells} | {finest} | {errors} | {order} | {estimate} | {against} |")
+    open(os.path.join(args.results, "convergence_tables.txt"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+    rock = [(m, int(m[4:])) for m in ["rock60", "rock35"] if os.path.isdir(os.path.join(args.results, m))]
+    if rock and "q2-113" in data:
+        rows = sorted(rock + [("q2-113", 45)], key=lambda r: -r[1])
+        rdata = {m: data[m] if m in data else collect(args.results, m) for m, _ in rows}
+        rows = [r for r in rows if rdata[r[0]][0]]
+        keys = [k for k in rdata["q2-113"][0] if not k.startswith("f")]
+        lines = ["| quantity (q2-113 dam) | " + " | ".join(f"rock {h} m" for _, h in rows) +
+                 " | " + ", ".join(f"{h} m" for _, h in rows if h != 45) + " against 45 m [%] |",
+                 "|---" * (len(rows) + 2) + "|",
+                 "| DOFs | " + " | ".join(f"{rdata[m][1]['DOFs']:,}" for m, _ in rows) + " | |"]
+        ref = rdata["q2-113"][0]
+        for k in keys:
+            cells = " | ".join(f"{rdata[m][0][k]:.4g}" for m, _ in rows)
+            diffs = "–" if k.startswith("energy") else ", ".join(
+                f"{percent(rdata[m][0][k], ref[k]):+.1f}" for m, h in rows if h != 45
+            )
+            lines.append(f"| {k} | {cells} | {diffs} |")
+        with open(os.path.join(args.results, "convergence_tables.txt"), "a") as f:
+            f.write("\n" + "\n".join(lines) + "\n")
+        print("\n".join(lines))
+
+    groups = {
+        "static": [k for k in quantities if k.startswith("static")],
+        "modal": [k for k in quantities if k.startswith("f")],
+        "dynamic": [k for k in quantities if k.startswith("peak") or k.startswith("energy")],
+    }
+    for group, keys in groups.items():
+        if not keys:
+            continue
+        cols = 4
+        rows = (len(keys) + cols - 1) // cols
+        fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+        for ax, k in zip(axes.flat, keys):
+            pts = [(data[m][1]["DOFs"], data[m][0][k], m) for m in names if k in data[m][0] and "DOFs" in data[m][1]]
+            ax.semilogx([p[0] for p in pts], [p[1] for p in pts], "o-")
+            for x, y, m in pts:
+                ax.annotate(m, (x, y), fontsize=7)
+            ax.set_title(k, fontsize=8)
+            ax.set_xlabel("DOFs", fontsize=8)
+            ax.tick_params(labelsize=7)
+            ax.grid(True, alpha=0.3)
+        for ax in list(axes.flat)[len(keys):]:
+            ax.axis("off")
+        fig.tight_layout()
+        fig.savefig(os.path.join(out_dir, f"convergence_{group}.png"), dpi=110)
+        plt.close(fig)
