@@ -124,23 +124,29 @@ def crown_stresses(directory):
 def collect(results, mesh):
     """Every quantity of the study for one mesh (missing runs left out)."""
     q, info = {}, {}
-    d = os.path.join(results, mesh, "dynamic")
+    # the static state: from the dynamic run, else from the static-only run
+    for run in ["dynamic", "static"]:
+        d = os.path.join(results, mesh, run)
+        if os.path.exists(os.path.join(d, "summary.json")):
+            break
     if os.path.exists(os.path.join(d, "summary.json")):
         s = flatten(json.load(open(os.path.join(d, "summary.json"))))
         info["DOFs"] = total_dofs(d)
         info["node pairs"] = sum(
             v for k, v in s.items() if k.startswith("mesh/joints/") and k.endswith("node pairs")
         )
-        info["wall time, dynamic run [s]"], info["peak memory, dynamic run [GB]"] = time_txt(
-            os.path.join(d, "time.txt")
-        )
-        info["end time [s]"] = s["dynamic/end time [s]"]
         q["static: crest - base, x [mm]"] = 1e3 * (s["static/crest.ux [m]"] - s["static/base.ux [m]"])
         openings = [s[f"static/joints/joint {j}/peak opening [m]"] for j in range(13)]
         j = max(range(13), key=lambda k: openings[k])
         q["static: largest joint opening [mm]"] = 1e3 * openings[j]
         info["static: most open joint"] = j
         q.update({"static: " + k: v for k, v in crown_stresses(d).items()})
+    d = os.path.join(results, mesh, "dynamic")
+    if os.path.exists(os.path.join(d, "summary.json")):
+        s = flatten(json.load(open(os.path.join(d, "summary.json"))))
+        info["wall time, dynamic run [s]"], info["peak memory, dynamic run [GB]"] = time_txt(
+            os.path.join(d, "time.txt")
+        )
         h = read_csv(os.path.join(d, "histories.csv"))
         jh = read_csv(os.path.join(d, "joint_histories_dynamic.csv"))
         for c in ["x", "y"]:
