@@ -230,7 +230,7 @@ def report(args, meshes, series):
         run = (
             f"{info['wall time, dynamic run [s]'] / 60:.1f}, {info['peak memory, dynamic run [GB]']:.1f}"
             if "wall time, dynamic run [s]" in info
-            else "not run"
+            else f"not run to {window:g} s"
         )
         lines.append(
             f"| {m} | Q{deg} | {nb} × {nt} × {nz} | {info['DOFs']:,} | {info.get('node pairs', '–')} | {run} |"
