@@ -112,13 +112,28 @@ def crown_stresses(directory):
         n = math.hypot(t[0], t[1])
         t = (t[0] / n, t[1] / n, 0.0)
         inset = 0.01 * (down - up)
-        valid, stress = probe([(up + inset, CROWN_Y, z), (down - inset, CROWN_Y, z)])
+        _, stress = probe([(up + inset, CROWN_Y, z), (down - inset, CROWN_Y, z)])
         for face, s in zip(["upstream", "downstream"], stress):
             S = [[s[3 * i + j] for j in range(3)] for i in range(3)]
             arch = sum(t[i] * S[i][j] * t[j] for i in range(3) for j in range(3))
             result[f"arch stress, {label}, {face} [MPa]"] = arch / 1e6
             result[f"cantilever stress, {label}, {face} [MPa]"] = S[2][2] / 1e6
     return result
+
+
+def summary(directory):
+    """A run's summary.json, flattened to "a/b/c" keys, or None if it has not run."""
+    path = os.path.join(directory, "summary.json")
+    return flatten(json.load(open(path))) if os.path.exists(path) else None
+
+
+def node_pairs(s):
+    return sum(v for k, v in s.items() if k.startswith("mesh/joints/") and k.endswith("node pairs"))
+
+
+def largest_opening(s, stage):
+    """The largest of the 13 joints' peak openings of a stage [mm]."""
+    return 1e3 * max(s[f"{stage}/joints/joint {j}/peak opening [m]"] for j in range(13))
 
 
 def collect(results, mesh, window):
@@ -130,29 +145,20 @@ def collect(results, mesh, window):
     # the static state: from the dynamic run, else from the static-only run
     for run in ["dynamic", "static"]:
         d = os.path.join(results, mesh, run)
-        if os.path.exists(os.path.join(d, "summary.json")):
+        s = summary(d)
+        if s:
+            info["DOFs"], info["node pairs"] = total_dofs(d), node_pairs(s)
+            q["static: crest - base, x [mm]"] = 1e3 * (s["static/crest.ux [m]"] - s["static/base.ux [m]"])
+            q["static: largest joint opening [mm]"] = largest_opening(s, "static")
+            q.update({"static: " + k: v for k, v in crown_stresses(d).items()})
             break
-    if os.path.exists(os.path.join(d, "summary.json")):
-        s = flatten(json.load(open(os.path.join(d, "summary.json"))))
-        info["DOFs"] = total_dofs(d)
-        info["node pairs"] = sum(
-            v for k, v in s.items() if k.startswith("mesh/joints/") and k.endswith("node pairs")
-        )
-        q["static: crest - base, x [mm]"] = 1e3 * (s["static/crest.ux [m]"] - s["static/base.ux [m]"])
-        openings = [s[f"static/joints/joint {j}/peak opening [m]"] for j in range(13)]
-        j = max(range(13), key=lambda k: openings[k])
-        q["static: largest joint opening [mm]"] = 1e3 * openings[j]
-        info["static: most open joint"] = j
-        q.update({"static: " + k: v for k, v in crown_stresses(d).items()})
     d = os.path.join(results, mesh, "dynamic")
-    s = flatten(json.load(open(os.path.join(d, "summary.json")))) if os.path.exists(
-        os.path.join(d, "summary.json")) else None
+    s = summary(d)
     if s and s["dynamic/end time [s]"] >= window - 1e-9:
         whole_run = s["dynamic/end time [s]"] <= window + 1e-9
         info["wall time, dynamic run [s]"], info["peak memory, dynamic run [GB]"] = time_txt(
             os.path.join(d, "time.txt")
         )
-        info["end time [s]"] = s["dynamic/end time [s]"]
 
         def in_window(columns):
             keep = [t <= window + 1e-9 for t in columns["time [s]"]]
@@ -167,22 +173,16 @@ def collect(results, mesh, window):
         q["peak opening at A [mm]"] = 1e3 * max(jh["A.opening [m]"])
         q["peak opening at B [mm]"] = 1e3 * max(jh["B.opening [m]"])
         if whole_run:
-            openings = [s[f"dynamic/joints/joint {j}/peak opening [m]"] for j in range(13)]
-            j = max(range(13), key=lambda k: openings[k])
-            q["peak opening, most open joint [mm]"] = 1e3 * openings[j]
-            info["dynamic: most open joint"] = j
+            q["peak opening, most open joint [mm]"] = largest_opening(s, "dynamic")
             q["energy balance error"] = s["energy balance/balance error"]
     for run, label in [("modal_massed", "massed rock"), ("modal_massless", "massless rock")]:
         d = os.path.join(results, mesh, run)
-        if os.path.exists(os.path.join(d, "summary.json")):
-            s = flatten(json.load(open(os.path.join(d, "summary.json"))))
+        s = summary(d)
+        if s:
             for k in range(1, 6):
                 q[f"f{k}, water, {label} [Hz]"] = s[f"modal/mode {k}/frequency [Hz]"]
             if "DOFs" not in info:
-                info["DOFs"] = total_dofs(d)
-                info["node pairs"] = sum(
-                    v for k, v in s.items() if k.startswith("mesh/joints/") and k.endswith("node pairs")
-                )
+                info["DOFs"], info["node pairs"] = total_dofs(d), node_pairs(s)
     return q, info
 
 
