@@ -123,21 +123,28 @@ namespace archdam::joints
   }
 
   double
+  JointSolver::largest_pair_force() const
+  {
+    double largest = 0.;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      largest = std::max(largest, std::sqrt(force[dim * i] * force[dim * i] +
+                                            force[dim * i + 1] * force[dim * i + 1] +
+                                            force[dim * i + 2] * force[dim * i + 2]));
+    return largest;
+  }
+
+  double
   JointSolver::relative_change(const std::vector<double> &before) const
   {
-    double change = 0., scale = 0.;
+    double change = 0.;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
-        double d2 = 0., f2 = 0.;
+        double d2 = 0.;
         for (unsigned int k = 0; k < dim; ++k)
-          {
-            d2 += std::pow(force[dim * i + k] - before[dim * i + k], 2);
-            f2 += std::pow(force[dim * i + k], 2);
-          }
+          d2 += std::pow(force[dim * i + k] - before[dim * i + k], 2);
         change = std::max(change, std::sqrt(d2));
-        scale  = std::max(scale, std::sqrt(f2));
       }
-    return change == 0. ? 0. : change / scale;
+    return change == 0. ? 0. : change / largest_pair_force();
   }
 
   void

@@ -358,14 +358,18 @@ namespace archdam::joints
           changed = update_state(i) || changed;
         // The Newton step meets the slip law f_t = tau q / |q| only at
         // convergence: a slipping pair whose force is off it by more than
-        // Force tolerance (relative to the pair's force) is not converged.
+        // Force tolerance, relative to the largest pair force (the scale of
+        // the force change below, and of the round-off of the dense solve:
+        // relative to a weakly loaded pair's own force the test asked for
+        // more digits than the solve has), is not converged.
+        const double force_scale = largest_pair_force();
         for (unsigned int i = 0; i < pairs.size() && !changed; ++i)
           if (state[i] == PairState::slip)
             {
               const double *f   = &force[dim * i];
               const double  tau = strength(i).shear_capacity(f[0]);
               changed = std::hypot(f[1] - tau * direction[i][1], f[2] - tau * direction[i][2]) >
-                        p.force_tolerance * std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+                        p.force_tolerance * force_scale;
             }
         step.force_change = relative_change(before);
         step.gap_residual = gap_residual(step.worst_pair);

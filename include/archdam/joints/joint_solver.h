@@ -188,6 +188,9 @@ namespace archdam::joints
     /// Largest change of a pair force relative to the largest force.
     double
     relative_change(const std::vector<double> &before) const;
+    /// Largest pair force |f_i| [N].
+    double
+    largest_pair_force() const;
 
     /**
      * The active-set update of pair i (doc/theory/joints.md §6) from its force (for
@@ -283,7 +286,7 @@ namespace archdam::joints
     /// Active-set iterations before projected Gauss-Seidel takes over, and
     /// allowed for each try of the states Gauss-Seidel reaches once they have
     /// held for polish_after sweeps. The reference case's static stage on
-    /// its production mesh needs 29 active-set iterations, and thousands of
+    /// its production mesh needs 9 active-set iterations, and thousands of
     /// sweeps when they are cut short (doc/theory/joints.md §6).
     static constexpr unsigned int active_set_limit = 100, active_set_polish = 10,
                                   polish_after = 5;
