@@ -8,6 +8,7 @@ motion and time step on each:
   q2-113      Q2, 1 x 1 x 3
   production  Q2, 2 x 2 x 6 (the case file as written)
   q2-236      Q2, 2 x 3 x 6 (the production mesh with three cells through the thickness)
+  q2-326      Q2, 3 x 2 x 6 (the production mesh with three cells across each block)
   fine        Q2, 3 x 3 x 9
   (rock and water cell sizes as in the case file: the rock and water meshes
   follow the dam's cells at the interfaces and grade to 45 m and 35 m away
@@ -52,6 +53,7 @@ MESHES = {
     "q2-113": (2, 1, 1, 3),
     "production": (2, 2, 2, 6),
     "q2-236": (2, 2, 3, 6),
+    "q2-326": (2, 3, 2, 6),
     "fine": (2, 3, 3, 9),
 }
 # uniformly refined Q2 meshes: observed orders and Richardson estimates
