@@ -123,12 +123,10 @@ namespace archdam::analysis
   output::StepRecord
   Simulation::step_record() const
   {
-    const bool impulse = joint_solver && current.step > 0 &&
-                         p.joints.contact_in_time == joints::ContactInTime::step_impulse;
     return {current,
             joint_solver.get(),
             foundation() ? Tensor<1, dim>() : model().ground_motion().acceleration(current.time),
-            impulse ? &mean_acceleration : nullptr};
+            step_impulse() && current.step > 0 ? &mean_acceleration : nullptr};
   }
 
   void
@@ -236,10 +234,6 @@ namespace archdam::analysis
     double                      last_checkpoint = 0.;
     std::string                 step_before; // the last good step, for the divergence stop
 
-    // The joints' step impulse: the outputs show the step's mean acceleration
-    // (doc/theory/joints.md §10).
-    const bool step_impulse =
-      joint_solver && p.joints.contact_in_time == joints::ContactInTime::step_impulse;
     const unsigned int first_step = resume_from ? resume_from->step + 1 : 1;
     for (unsigned int n = first_step; n <= n_steps; ++n)
       {
@@ -252,7 +246,7 @@ namespace archdam::analysis
         {
           TimerOutput::Scope t(timer, "dynamic: steps");
           external_load(n * dt, load);
-          if (step_impulse)
+          if (step_impulse())
             v_before = current.v;
           joints::ContactStep contact;
           time::NewmarkIntegrator::StepSolver solve;
@@ -270,7 +264,7 @@ namespace archdam::analysis
             integrator->advance(load, current, solve);
           if (joint_solver)
             check_contact_step(contact, n * dt);
-          if (step_impulse)
+          if (step_impulse())
             {
               mean_acceleration = current.v;
               mean_acceleration -= v_before;

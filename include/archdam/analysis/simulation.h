@@ -204,6 +204,14 @@ namespace archdam::analysis
     /// The current state as the recorders see it.
     output::StepRecord
     step_record() const;
+    /// Whether the joints' pair forces act as one impulse per step: the
+    /// outputs then show the step's mean acceleration (doc/theory/joints.md
+    /// §10).
+    bool
+    step_impulse() const
+    {
+      return joint_solver && p.joints.contact_in_time == joints::ContactInTime::step_impulse;
+    }
     /// Finish the recorders and put the stage's settings and costs into the
     /// summary: at the end, or after the last good step of a stopped run
     /// (@p n_run steps in @p wall_time seconds).
