@@ -6,6 +6,8 @@ motion and time step on each:
 
   coarse      Q1, 1 cell across each block, 1 through the thickness, 4 over the height
   q2-113      Q2, 1 x 1 x 3
+  q2-224      Q2, 2 x 2 x 4 (the production mesh with fewer cells over the height:
+              that direction measured from below)
   production  Q2, 2 x 2 x 6 (the case file as written)
   q2-236      Q2, 2 x 3 x 6 (the production mesh with three cells through the thickness)
   q2-326      Q2, 3 x 2 x 6 (the production mesh with three cells across each block)
@@ -48,6 +50,7 @@ MESHES = {
     # name: (degree, across each block, through thickness, over height)
     "coarse": (1, 1, 1, 4),
     "q2-113": (2, 1, 1, 3),
+    "q2-224": (2, 2, 2, 4),
     "production": (2, 2, 2, 6),
     "q2-236": (2, 2, 3, 6),
     "q2-326": (2, 3, 2, 6),
