@@ -22,6 +22,18 @@
 //    with On non-convergence = stop the run ends with a message naming the
 //    time, the joint, the node pair's position and the residual; with
 //    continue it reaches the end and counts the flagged steps in the summary.
+// 4. The static stage by dynamic relaxation (Static solution = dynamic
+//    relaxation, doc/theory/loading-sequence.md §1) against the one solve of
+//    the mixed method with K (a second method for the same static problem),
+//    where the static problem has one solution: joints that cannot open or
+//    slide (linear), and frictionless joints without tensile strength (a
+//    convex problem: one displacement field; its joints open by more than
+//    1 mm). Static displacement to 1e-6 and 1e-5 of its largest component
+//    (out-of-balance tolerance 1e-7 of the largest load); no pair opens, or
+//    the law holds at rest. With the paper's law (where friction makes the
+//    answer depend on the loading path) the law holds at rest and the
+//    out-of-balance force is within its tolerance (1e-6). Maximum steps too
+//    few: a message naming the out-of-balance force.
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
@@ -29,6 +41,8 @@
 #include "archdam_tests.h"
 #include "case_text.h"
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -229,6 +243,132 @@ main(int argc, char **argv)
         << (std::abs(flagged.state().time - 0.5) < 1e-9 ? "yes" : "NO")
         << ", flagged steps counted in summary.json: "
         << (count > 0 ? "yes" : "NO")
+        << std::endl;
+  }
+
+  // 4. the static stage by dynamic relaxation against the one solve
+  {
+    const std::string relaxation = "\n  set Static solution = dynamic relaxation\n"
+                                   "  subsection Dynamic relaxation\n"
+                                   "    set Frequency = RELAX_FREQUENCY\n"
+                                   "    set Tolerance = RELAX_TOLERANCE\n    set Maximum steps = 20000\n"
+                                   "  end";
+    const auto relaxed = [&](const double frequency, const double tolerance) {
+      std::ostringstream f, t;
+      f << frequency;
+      t << tolerance;
+      return std::regex_replace(std::regex_replace(relaxation, std::regex("RELAX_FREQUENCY"), f.str()),
+                                std::regex("RELAX_TOLERANCE"), t.str());
+    };
+    // What a static state is compared by, independent of how the processes
+    // number the DOFs: every pair's force and relative displacement (sorted
+    // by the pair's position) and the crest monitor's displacement.
+    struct StaticState
+    {
+      std::vector<std::array<double, 9>> pairs; // x, y, z, f (3), w (3)
+      Tensor<1, 3>                       crest;
+      double                             largest_gap = 0.;
+      LawCheck                           law;
+    };
+    const auto static_state = [&](const std::string &joints, const std::string &directory,
+                                  const double frequency) {
+      std::string text = joints;
+      if (frequency > 0.)
+        text += relaxed(frequency, 1e-7);
+      const Parameters     q = parameters_from_string(model(text, directory, "static"));
+      analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
+      s.run();
+      const auto &j = *s.joint_state();
+      StaticState r;
+      for (unsigned int i = 0; i < j.pairs.size(); ++i)
+        {
+          const auto &x = j.pairs[i].position;
+          r.pairs.push_back({{x[0], x[1], x[2], j.force[3 * i], j.force[3 * i + 1], j.force[3 * i + 2],
+                             j.w[3 * i], j.w[3 * i + 1], j.w[3 * i + 2]}});
+          r.largest_gap = std::max(r.largest_gap, j.gap(i));
+        }
+      std::sort(r.pairs.begin(), r.pairs.end());
+      r.crest = s.model().monitors().displacement(0, s.static_displacement());
+      r.law   = check_law(j, 0.);
+      return r;
+    };
+    // max |a - b| over entries [first, first + 3) of every pair, relative to max |a|
+    const auto pair_difference = [](const StaticState &a, const StaticState &b, const unsigned int first) {
+      double largest = 0., difference = 0.;
+      for (unsigned int i = 0; i < a.pairs.size(); ++i)
+        for (unsigned int k = first; k < first + 3; ++k)
+          {
+            largest    = std::max(largest, std::abs(a.pairs[i][k]));
+            difference = std::max(difference, std::abs(a.pairs[i][k] - b.pairs[i][k]));
+          }
+      return difference / largest;
+    };
+    log << "the static stage by dynamic relaxation against the one solve:" << std::endl;
+    struct Case
+    {
+      std::string name, joints;
+      double      frequency, tolerance;
+      bool        zero_strength; // the law of check_law() (c = 0, sigma_t = 0, mu = 0)
+    };
+    const std::string strong_law = "  set Model = frictional contact\n  set Tensile strength = 1e12\n"
+                                   "  set Cohesion = 1e12";
+    const std::string frictionless = "  set Model = frictional contact\n  set Friction coefficient = 0\n"
+                                     "  set Cohesion = 0\n  set Tensile strength = 0";
+    for (const Case &c : {Case{"strong joints", strong_law, 2., 1e-6, false},
+                          Case{"frictionless joints", frictionless, 0.5, 1e-5, true}})
+      {
+        const StaticState one     = static_state(c.joints, "one_solve", 0.);
+        const StaticState settled = static_state(c.joints, "relaxed", c.frequency);
+        log << "  " << c.name << " (largest opening " << (one.largest_gap > 1e-3 ? "above" : "below")
+            << " 1 mm):" << std::endl;
+        testing::check_below("    crest: |u difference| / |u|",
+                             (settled.crest - one.crest).norm() / one.crest.norm(), c.tolerance);
+        testing::check_below("    pair forces: max difference / largest", pair_difference(one, settled, 3),
+                             c.tolerance);
+        if (c.zero_strength)
+          {
+            testing::check_below("    pair relative displacements: max difference / largest",
+                                 pair_difference(one, settled, 6), c.tolerance);
+            testing::check_below("    law at rest: penetration or open loaded pair [m]",
+                                 settled.law.gap, 1e-9);
+            testing::check_below("    law at rest: tension or shear beyond friction",
+                                 settled.law.force, 1e-6);
+          }
+        else
+          testing::check_below("    largest opening of a pair [m]", settled.largest_gap, 1e-9);
+      }
+    LawCheck at_rest;
+    {
+      const Parameters     q = parameters_from_string(model(law + relaxed(1., 1e-6), "relaxed_law", "static"));
+      analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
+      s.run();
+      at_rest = check_law(*s.joint_state(), mu);
+    }
+    log << "  the paper's law:" << std::endl;
+    testing::check_below("    law at rest: penetration or open loaded pair [m]", at_rest.gap, 1e-9);
+    testing::check_below("    law at rest: tension or shear beyond friction", at_rest.force, 1e-6);
+    const double out_of_balance = testing::summary_number(
+      "relaxed_law/summary.json", "out-of-balance force relative to the largest load");
+    log << "    out-of-balance force at most the tolerance (1e-6 of the largest load): "
+        << (out_of_balance >= 0. && out_of_balance <= 1e-6 ? "yes" : "NO") << std::endl;
+    std::string stop;
+    try
+      {
+        const Parameters q = parameters_from_string(model(
+          law + std::regex_replace(relaxed(1., 1e-6), std::regex("20000"), "5"), "too_few", "static"));
+        analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
+        s.run();
+      }
+    catch (const InputError &e)
+      {
+        stop = e.what();
+      }
+    log << "  Maximum steps = 5: a message naming the out-of-balance force and the setting: "
+        << (stop.find("has not come to rest in 5 steps") != std::string::npos &&
+                stop.find("out-of-balance force") != std::string::npos &&
+                stop.find("Maximum steps") != std::string::npos ?
+              "yes" :
+              "NO: " + stop)
         << std::endl;
   }
 }

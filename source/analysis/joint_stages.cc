@@ -2,6 +2,9 @@
 #include <archdam/base/input_error.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
 #include <iomanip>
 
 namespace archdam::analysis
@@ -51,25 +54,147 @@ namespace archdam::analysis
       joints::make_joint_solver(p.joints, *model().joint_pairs(), 1., stiffness, stiffness_factor);
     if (p.joints.grouting == joints::Grouting::after_self_weight)
       {
-        Vector weight = model().self_weight();
-        model().space().constraints.set_zero(weight);
-        stiffness_factor.solve(u_static, weight);
+        solve_ungrouted_self_weight(stiffness_factor, u_static);
         joint_solver->grout(u_static);
-        // What the blocks do on their own: a block that cannot stand without
-        // its neighbours shows here (doc/theory/loading-sequence.md §1).
-        const double max_u = u_static.linfty_norm();
-        screen << "  the self-weight on the independent cantilevers (max |u_i| = "
-               << std::setprecision(4) << max_u << " m), then the joints grouted" << std::endl;
-        summary.set("static/ungrouted cantilevers under self-weight: max nodal displacement "
-                    "component [m]",
-                    max_u);
       }
     const auto step = joint_solver->solve(rhs, joint_solver->unloaded(), u_static);
     if (!step.converged)
       non_converged_times.push_back(0.);
     check_convergence(p.joints, *joint_solver, step, "static stage");
     joint_solver->accept();
-    summary.set("static/contact iterations", step.iterations);
+    finish_static_joints(step.iterations);
+  }
+
+  void
+  Simulation::solve_ungrouted_self_weight(const time::FactorizedOperator &stiffness_factor,
+                                          Vector                         &u)
+  {
+    Vector weight = model().self_weight();
+    model().space().constraints.set_zero(weight);
+    stiffness_factor.solve(u, weight);
+    // What the blocks do on their own: a block that cannot stand without
+    // its neighbours shows here (doc/theory/loading-sequence.md §1).
+    const double max_u = u.linfty_norm();
+    screen << "  the self-weight on the independent cantilevers (max |u_i| = "
+           << std::setprecision(4) << max_u << " m), then the joints grouted" << std::endl;
+    summary.set("static/ungrouted cantilevers under self-weight: max nodal displacement "
+                "component [m]",
+                max_u);
+  }
+
+  /**
+   * Static stage with the joints by dynamic relaxation (doc/theory/loading-sequence.md
+   * §1, "Dynamic relaxation"): M a + alpha M v + K u + B^T f = F_0 + lambda(t) (F - F_0),
+   * alpha = 4 pi Frequency, lambda rising from 0 to 1 over the loading time,
+   * stepped with the Newmark scheme (Beta1 = 3/4) as a dynamic step (one
+   * factorization of Kbar = (1 + alpha dt / 2) M + dt^2 / 4 K, the contact
+   * problem on the pairs), from the grouted state at rest (u = 0, or u_g
+   * with F_0 = F_g after self-weight) until |F - K u - B^T f| <= Tolerance |F|.
+   */
+  void
+  Simulation::relax_static_with_joints(const SparseMatrix &stiffness, const Vector &rhs)
+  {
+    const auto            &r = p.joints.relaxation;
+    // The trapezoidal forces hold the closed pairs' positions, so the state
+    // at rest satisfies the law (the step impulse holds their velocities, and
+    // a pair may rest closed at a small gap); Beta1 = 3/4 dissipates what
+    // they put in when pairs open, and damps the high modes.
+    relaxation_joints                 = p.joints;
+    relaxation_joints.contact_in_time = joints::ContactInTime::trapezoidal;
+    time::NewmarkParameters scheme;
+    scheme.time_step   = r.time_step;
+    scheme.beta1       = 0.75;
+    scheme.beta2       = 0.390625; // (beta1 + 1/2)^2 / 4
+    const double alpha = 4. * numbers::PI * r.frequency;
+
+    time::NewmarkState s;
+    for (Vector *x : {&s.u, &s.v, &s.a})
+      model().space().reinit(*x);
+    Vector start_load, load, residual;
+    model().space().reinit(start_load);
+    model().space().reinit(load);
+    model().space().reinit(residual);
+    if (p.joints.grouting == joints::Grouting::after_self_weight)
+      {
+        time::FactorizedOperator stiffness_factor;
+        stiffness_factor.factorize(stiffness, true, {});
+        solve_ungrouted_self_weight(stiffness_factor, s.u);
+        start_load = model().self_weight();
+        model().space().constraints.set_zero(start_load);
+      }
+    time::NewmarkIntegrator relaxation(scheme, model().mass(), stiffness, {alpha, 0.},
+                                       model().space().constraints, nullptr,
+                                       condensed_interface());
+    joint_solver = joints::make_joint_solver(relaxation_joints, *model().joint_pairs(),
+                                             relaxation.displacement_factor(),
+                                             relaxation.effective(), relaxation.effective_factor());
+    joint_solver->grout(s.u);
+    if (!joint_solver->uses_matrix())
+      relaxation.release_effective_matrix();
+    screen << "  dynamic relaxation: steps of " << r.time_step << " s, damping critical at "
+           << r.frequency << " Hz, the load ramped over " << r.loading_time << " s" << std::endl;
+
+    const double scale       = rhs.linfty_norm();
+    const auto   start       = std::chrono::steady_clock::now();
+    double       last_report = 0.;
+    unsigned int iterations = 0, most_iterations = 0;
+    double       out_of_balance = 1.;
+    unsigned int n              = 0;
+    while (true)
+      {
+        if (n == r.max_steps)
+          {
+            std::ostringstream text;
+            text << "Static stage: the dynamic relaxation has not come to rest in " << n
+                 << " steps (t = " << n * r.time_step << " s): the out-of-balance force is "
+                 << out_of_balance << " of the largest load, Tolerance = " << r.tolerance
+                 << ". Raise Contraction joints/Dynamic relaxation/Maximum steps, or set "
+                 << "its Frequency near the dam's first natural frequency.";
+            throw InputError(text.str());
+          }
+        ++n;
+        const double t      = n * r.time_step;
+        const double lambda = t >= r.loading_time ? 1. : 0.5 * (1. - std::cos(numbers::PI * t / r.loading_time));
+        load.equ(1. - lambda, start_load);
+        load.add(lambda, rhs);
+        const auto step = joints::advance_with_contact(relaxation, *joint_solver, load, s);
+        iterations += step.iterations;
+        most_iterations = std::max(most_iterations, step.iterations);
+        if (!step.converged)
+          non_converged_times.push_back(0.);
+        check_convergence(p.joints, *joint_solver, step,
+                          "static stage, dynamic relaxation step " + std::to_string(n));
+        // F - K u - B^T f with the forces the law holds.
+        stiffness.vmult(residual, s.u);
+        residual.sadd(-1., 1., rhs);
+        model().joint_pairs()->add_transpose(joint_solver->force, -1., residual);
+        model().space().constraints.set_zero(residual);
+        out_of_balance = residual.linfty_norm() / scale;
+        const bool   done = t >= r.loading_time && out_of_balance <= r.tolerance;
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (p.output.progress && (wall - last_report > 10. || done))
+          {
+            last_report = wall;
+            screen << "  relaxation step " << n << "  t = " << std::setprecision(4) << t
+                   << " s  load " << std::setprecision(3) << lambda << "  out of balance "
+                   << out_of_balance << "  contact iterations <= " << most_iterations
+                   << std::endl;
+          }
+        if (done)
+          break;
+      }
+    u_static = s.u;
+    summary.set("static/dynamic relaxation/steps", n);
+    summary.set("static/dynamic relaxation/out-of-balance force relative to the largest load",
+                out_of_balance);
+    summary.set("static/dynamic relaxation/largest contact iterations in a step", most_iterations);
+    finish_static_joints(iterations);
+  }
+
+  void
+  Simulation::finish_static_joints(const unsigned int iterations)
+  {
+    summary.set("static/contact iterations", iterations);
     if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
       summary.set("static/time to build the flexibility matrix [s]", mixed->build_time);
 

@@ -27,18 +27,28 @@ namespace archdam::analysis
                                                             {1., &model().fluid()->Q},
                                                             {1., &model().fluid()->G}});
       const SparseMatrix      &K = model().fluid() ? with_water : model().stiffness();
-      screen << "Static stage: factorizing K (" << model().space().dof_handler.n_dofs() << " DOFs)"
-             << std::endl;
-      time::FactorizedOperator stiffness_factor;
-      stiffness_factor.factorize(K, true, condensed_interface());
-      screen << "  factors: " << std::setprecision(4) << stiffness_factor.factor_entries()
-             << " entries" << std::endl;
       Vector rhs = model().static_load();
       model().space().constraints.set_zero(rhs);
-      if (model().joint_pairs())
-        solve_static_with_joints(K, stiffness_factor, rhs);
+      if (model().joint_pairs() &&
+          p.joints.static_solution == joints::StaticSolution::dynamic_relaxation)
+        {
+          screen << "Static stage: dynamic relaxation with the joints ("
+                 << model().space().dof_handler.n_dofs() << " DOFs)" << std::endl;
+          relax_static_with_joints(K, rhs);
+        }
       else
-        stiffness_factor.solve(u_static, rhs);
+        {
+          screen << "Static stage: factorizing K (" << model().space().dof_handler.n_dofs()
+                 << " DOFs)" << std::endl;
+          time::FactorizedOperator stiffness_factor;
+          stiffness_factor.factorize(K, true, condensed_interface());
+          screen << "  factors: " << std::setprecision(4) << stiffness_factor.factor_entries()
+                 << " entries" << std::endl;
+          if (model().joint_pairs())
+            solve_static_with_joints(K, stiffness_factor, rhs);
+          else
+            stiffness_factor.solve(u_static, rhs);
+        }
       model().space().constraints.distribute(u_static);
       current.u = u_static;
     }

@@ -70,6 +70,43 @@ namespace archdam::joints
                   "deformed state (its relative displacements become the joints' zero: no "
                   "opening, slip or force from self-weight), then the hydrostatic load "
                   "acts on the grouted dam with the joints in contact.");
+    add_selection(prm, "Static solution", static_solution, static_solution_names(),
+                  "How the static stage solves the joints' contact problem "
+                  "(doc/theory/loading-sequence.md §1): one solve = the mixed method "
+                  "with K, the whole static load at once (fast; on meshes with many "
+                  "cells over the height its active set can cycle without converging); "
+                  "dynamic relaxation = the load ramped smoothly in a fictitious "
+                  "transient with the dam's mass and a damping critical at Frequency, "
+                  "stepped with the Newmark scheme (Beta1 = 3/4, the trapezoidal joint "
+                  "forces, whatever Contact in time says) until the out-of-balance "
+                  "force falls below Tolerance (subsection Dynamic relaxation): each "
+                  "step's contact problem is the well-conditioned one of a dynamic "
+                  "step, and friction sees the load grow as it does in the dam.");
+    prm.enter_subsection("Dynamic relaxation");
+    prm.add_parameter("Time step", relaxation.time_step,
+                      "Step of the fictitious transient [s].", Patterns::Double(1e-12));
+    prm.add_parameter("Frequency", relaxation.frequency,
+                      "The mass-proportional damping is critical at this frequency "
+                      "[Hz]: every mode above it dies out at the same rate, 2 pi "
+                      "Frequency per second, a mode of frequency f well below it at "
+                      "pi f^2 / Frequency per second. Fastest near the lowest frequency of "
+                      "the dam with its joints: at or below the grouted dam's first "
+                      "frequency without water, lower where joints open wide.",
+                      Patterns::Double(1e-12));
+    prm.add_parameter("Loading time", relaxation.loading_time,
+                      "The static load grows from zero to its full value over this "
+                      "time, along (1 - cos(pi t / Loading time)) / 2 [s].",
+                      Patterns::Double(0.));
+    prm.add_parameter("Tolerance", relaxation.tolerance,
+                      "The transient ends, after the loading time, when the largest "
+                      "out-of-balance nodal force |F - K u - B^T f| is at most this "
+                      "times the largest nodal load.",
+                      Patterns::Double(1e-15));
+    prm.add_parameter("Maximum steps", relaxation.max_steps,
+                      "The run stops with a message if the transient has not come to "
+                      "rest within this many steps.",
+                      Patterns::Integer(1));
+    prm.leave_subsection();
     prm.add_parameter("Friction coefficient", law.friction_coefficient,
                       "Coulomb friction coefficient mu of the joint faces.",
                       Patterns::Double(0.));

@@ -154,6 +154,17 @@ namespace archdam::analysis
     solve_static_with_joints(const SparseMatrix             &stiffness,
                              const time::FactorizedOperator &stiffness_factor,
                              const Vector                   &rhs);
+    /// The same by dynamic relaxation: the load ramped in a damped transient
+    /// with the mass M until at rest (Static solution = dynamic relaxation).
+    void
+    relax_static_with_joints(const SparseMatrix &stiffness, const Vector &rhs);
+    /// Grouting = after self-weight: u = K^-1 F_g on the independent
+    /// cantilevers, reported; the caller grouts the joints at u.
+    void
+    solve_ungrouted_self_weight(const time::FactorizedOperator &stiffness_factor, Vector &u);
+    /// The static contact state's summary and output (joint_static_*.csv).
+    void
+    finish_static_joints(unsigned int iterations);
     /// The dynamic stage's joint solver with Kbar, from the static state.
     void
     start_dynamic_joints(const time::NewmarkIntegrator &newmark);
@@ -261,6 +272,9 @@ namespace archdam::analysis
     std::vector<std::unique_ptr<output::Recorder>> recorders;
     output::Summary                          summary;
     std::unique_ptr<joints::JointSolver>     joint_solver;
+    /// The joints' parameters of the static stage's dynamic relaxation
+    /// (trapezoidal forces); its solver refers to them.
+    joints::JointParameters relaxation_joints;
     /// The dynamic stage's integrator (make_integrator()).
     std::unique_ptr<time::NewmarkIntegrator> integrator;
     /// Wall time of the steps' solves with the joints (the forward

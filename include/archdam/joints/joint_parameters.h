@@ -143,6 +143,36 @@ namespace archdam::joints
     return names;
   }
 
+  /// `Contraction joints/Static solution`: how the static stage solves the
+  /// contact problem (doc/theory/loading-sequence.md §1).
+  enum class StaticSolution
+  {
+    one_solve,         ///< the mixed method with K, the whole load at once
+    dynamic_relaxation ///< the load ramped in a damped transient until the dam is at rest
+  };
+
+  /// The names of StaticSolution in the case file.
+  inline const SelectionNames<StaticSolution> &
+  static_solution_names()
+  {
+    static const SelectionNames<StaticSolution> names{
+      {"one solve", StaticSolution::one_solve},
+      {"dynamic relaxation", StaticSolution::dynamic_relaxation}};
+    return names;
+  }
+
+  /// `Contraction joints/Dynamic relaxation` (doc/theory/loading-sequence.md
+  /// §1): the fictitious transient that brings the static load onto the
+  /// joints.
+  struct RelaxationParameters
+  {
+    double       time_step    = 0.01;  ///< s
+    double       frequency    = 1.5;   ///< Hz: the damping is critical at this frequency
+    double       loading_time = 1.;    ///< s: the load's smooth ramp
+    double       tolerance    = 1e-6;  ///< out-of-balance force relative to the largest load
+    unsigned int max_steps    = 4000;
+  };
+
   /// The values of the law of one joint (doc/theory/joints.md §2, the
   /// paper's Table 1). Stresses in Pa, lengths in m.
   struct LawParameters
@@ -168,6 +198,8 @@ namespace archdam::joints
     Law           strength_law = Law::mohr_coulomb;
     ContactInTime contact_in_time = ContactInTime::step_impulse;
     Grouting      grouting        = Grouting::before_self_weight;
+    StaticSolution       static_solution = StaticSolution::one_solve;
+    RelaxationParameters relaxation;
     LawParameters law;
     /// "k: name = value, ...; ..." overrides of the law for single joints
     std::string per_joint;
