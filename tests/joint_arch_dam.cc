@@ -33,7 +33,8 @@
 //    the law holds at rest. With the paper's law (where friction makes the
 //    answer depend on the loading path) the law holds at rest and the
 //    out-of-balance force is within its tolerance (1e-6). Maximum steps too
-//    few: a message naming the out-of-balance force.
+//    few: a message naming the out-of-balance force; a one solve that does
+//    not converge: a message naming the relaxation as the remedy.
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
@@ -363,6 +364,25 @@ main(int argc, char **argv)
       {
         stop = e.what();
       }
+    // The one solve that does not converge names the relaxation as the remedy.
+    std::string one_solve_stop;
+    try
+      {
+        const Parameters q =
+          parameters_from_string(model(law + "\n  set Maximum iterations = 2", "one_solve_stop", "static"));
+        analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
+        s.run();
+      }
+    catch (const InputError &e)
+      {
+        one_solve_stop = e.what();
+      }
+    log << "  one solve not converged: the message names the static stage and the relaxation: "
+        << (one_solve_stop.find("static stage") != std::string::npos &&
+                one_solve_stop.find("Static solution = dynamic relaxation") != std::string::npos ?
+              "yes" :
+              "NO: " + one_solve_stop)
+        << std::endl;
     log << "  Maximum steps = 5: a message naming the out-of-balance force and the setting: "
         << (stop.find("has not come to rest in 5 steps") != std::string::npos &&
                 stop.find("out-of-balance force") != std::string::npos &&

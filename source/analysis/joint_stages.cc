@@ -14,14 +14,16 @@ namespace archdam::analysis
   namespace
   {
     /// Contraction joints/On non-convergence: stop with the message, or go on
-    /// (the caller flags the step).
+    /// (the caller flags the step). @p advice: a remedy named before the
+    /// general ones.
     void
     check_convergence(const joints::JointParameters &p, const joints::JointSolver &solver,
-                      const joints::ContactStep &step, const std::string &when)
+                      const joints::ContactStep &step, const std::string &when,
+                      const std::string &advice = "")
     {
       if (!step.converged && p.on_non_convergence == joints::OnNonConvergence::stop)
-        throw InputError("Contraction joints: " + when + ", " + solver.describe(step) +
-                         ". Set 'On non-convergence = continue' to go on and flag such "
+        throw InputError("Contraction joints: " + when + ", " + solver.describe(step) + ". " +
+                         advice + "Set 'On non-convergence = continue' to go on and flag such "
                          "steps, or adjust Maximum iterations or the tolerances.");
     }
   } // namespace
@@ -60,7 +62,11 @@ namespace archdam::analysis
     const auto step = joint_solver->solve(rhs, joint_solver->unloaded(), u_static);
     if (!step.converged)
       non_converged_times.push_back(0.);
-    check_convergence(p.joints, *joint_solver, step, "static stage");
+    check_convergence(p.joints, *joint_solver, step, "static stage",
+                      "The one solve's active set can cycle on meshes with many cells over "
+                      "the height: 'Static solution = dynamic relaxation' brings the static "
+                      "load on in a damped transient instead (doc/theory/loading-sequence.md "
+                      "§1). ");
     joint_solver->accept();
     finish_static_joints(step.iterations);
   }
