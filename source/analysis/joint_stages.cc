@@ -90,12 +90,14 @@ namespace archdam::analysis
 
   /**
    * Static stage with the joints by dynamic relaxation (doc/theory/loading-sequence.md
-   * §1, "Dynamic relaxation"): M a + alpha M v + K u + B^T f = F_0 + lambda(t) (F - F_0),
+   * §1, "How the static contact problem is solved"):
+   *   M a + alpha M v + K u + B^T f = F_0 + lambda(t) (F - F_0),
    * alpha = 4 pi Frequency, lambda rising from 0 to 1 over the loading time,
    * stepped with the Newmark scheme (Beta1 = 3/4) as a dynamic step (one
-   * factorization of Kbar = (1 + alpha dt / 2) M + dt^2 / 4 K, the contact
-   * problem on the pairs), from the grouted state at rest (u = 0, or u_g
-   * with F_0 = F_g after self-weight) until |F - K u - B^T f| <= Tolerance |F|.
+   * factorization of Kbar = (1 + alpha beta1 dt) M + beta2 dt^2 K, the
+   * contact problem on the pairs), from the grouted state at rest (u = 0, or
+   * u_g with F_0 = F_g after self-weight) until
+   * |F - K u - B^T f| <= Tolerance |F| (the absolute value without a load).
    */
   void
   Simulation::relax_static_with_joints(const SparseMatrix &stiffness, const Vector &rhs)
@@ -175,7 +177,7 @@ namespace archdam::analysis
         residual.sadd(-1., 1., rhs);
         model().joint_pairs()->add_transpose(joint_solver->force, -1., residual);
         model().space().constraints.set_zero(residual);
-        out_of_balance = residual.linfty_norm() / scale;
+        out_of_balance = residual.linfty_norm() / (scale > 0. ? scale : 1.);
         const bool   done = t >= r.loading_time && out_of_balance <= r.tolerance;
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (p.output.progress && (wall - last_report > 10. || done))
