@@ -87,6 +87,22 @@ namespace archdam::testing
       }
   }
 
+  /// The message of the InputError that @p run throws, "" when it throws none
+  /// (for tests that look for words in the message).
+  inline std::string
+  input_error_message(const std::function<void()> &run)
+  {
+    try
+      {
+        run();
+      }
+    catch (const InputError &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+
   /// Print @p what and then the message of the InputError that @p run must
   /// throw ("  InputError: ..."), or what happened instead.
   inline void

@@ -216,17 +216,11 @@ main(int argc, char **argv)
 
   // 3. a step that does not converge
   const std::string few = law + "\n  set Maximum iterations = 2";
-  std::string       message;
-  try
-    {
-      const Parameters     q = parameters_from_string(model(few, "stop", "dynamic"));
-      analysis::Simulation stopped(q, MPI_COMM_WORLD, quiet);
-      stopped.run();
-    }
-  catch (const InputError &e)
-    {
-      message = e.what();
-    }
+  const std::string message = testing::input_error_message([&] {
+    const Parameters     q = parameters_from_string(model(few, "stop", "dynamic"));
+    analysis::Simulation stopped(q, MPI_COMM_WORLD, quiet);
+    stopped.run();
+  });
   const auto has = [&](const std::string &s) { return message.find(s) != std::string::npos; };
   log << "non-convergence, stop: a message naming the time, joint, pair position and residual: "
       << (has("t = ") && has("joint ") && has("node pair at (") && has("law residual") &&
@@ -352,31 +346,19 @@ main(int argc, char **argv)
       "relaxed_law/summary.json", "out-of-balance force relative to the largest load");
     log << "    out-of-balance force at most the tolerance (1e-6 of the largest load): "
         << (out_of_balance >= 0. && out_of_balance <= 1e-6 ? "yes" : "NO") << std::endl;
-    std::string stop;
-    try
-      {
-        const Parameters q = parameters_from_string(model(
-          law + std::regex_replace(relaxed(1., 1e-6), std::regex("20000"), "5"), "too_few", "static"));
-        analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
-        s.run();
-      }
-    catch (const InputError &e)
-      {
-        stop = e.what();
-      }
+    const std::string stop = testing::input_error_message([&] {
+      const Parameters q = parameters_from_string(model(
+        law + std::regex_replace(relaxed(1., 1e-6), std::regex("20000"), "5"), "too_few", "static"));
+      analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
+      s.run();
+    });
     // The one solve that does not converge names the relaxation as the remedy.
-    std::string one_solve_stop;
-    try
-      {
-        const Parameters q =
-          parameters_from_string(model(law + "\n  set Maximum iterations = 2", "one_solve_stop", "static"));
-        analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
-        s.run();
-      }
-    catch (const InputError &e)
-      {
-        one_solve_stop = e.what();
-      }
+    const std::string one_solve_stop = testing::input_error_message([&] {
+      const Parameters q =
+        parameters_from_string(model(law + "\n  set Maximum iterations = 2", "one_solve_stop", "static"));
+      analysis::Simulation s(q, MPI_COMM_WORLD, quiet);
+      s.run();
+    });
     log << "  one solve not converged: the message names the static stage and the relaxation: "
         << (one_solve_stop.find("static stage") != std::string::npos &&
                 one_solve_stop.find("Static solution = dynamic relaxation") != std::string::npos ?
