@@ -12,6 +12,8 @@ motion and time step on each:
   q2-236      Q2, 2 x 3 x 6 (the production mesh with three cells through the thickness)
   q2-326      Q2, 3 x 2 x 6 (the production mesh with three cells across each block)
   q2-229      Q2, 2 x 2 x 9 (the production mesh with more cells over the height)
+  q2-2212     Q2, 2 x 2 x 12 (and twice the production mesh's cells over the height:
+              the height direction's series 6, 9, 12 for the earthquake peaks)
   fine        Q2, 3 x 3 x 9
   (rock and water cell sizes as in the case file: the rock and water meshes
   follow the dam's cells at the interfaces and grade to 45 m and 35 m away
@@ -62,6 +64,7 @@ MESHES = {
     "q2-236": (2, 2, 3, 6),
     "q2-326": (2, 3, 2, 6),
     "q2-229": (2, 2, 2, 9),
+    "q2-2212": (2, 2, 2, 12),
     "fine": (2, 3, 3, 9),
 }
 # uniformly refined Q2 meshes: observed orders and Richardson estimates

@@ -107,8 +107,8 @@ namespace archdam::analysis
     // at rest satisfies the law (the step impulse holds their velocities, and
     // a pair may rest closed at a small gap); Beta1 = 3/4 dissipates what
     // they put in when pairs open, and damps the high modes.
-    relaxation_joints                 = p.joints;
-    relaxation_joints.contact_in_time = joints::ContactInTime::trapezoidal;
+    joints::JointParameters relaxation_joints = p.joints;
+    relaxation_joints.contact_in_time         = joints::ContactInTime::trapezoidal;
     time::NewmarkParameters scheme;
     scheme.time_step   = r.time_step;
     scheme.beta1       = 0.75;

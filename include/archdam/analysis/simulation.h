@@ -272,9 +272,6 @@ namespace archdam::analysis
     std::vector<std::unique_ptr<output::Recorder>> recorders;
     output::Summary                          summary;
     std::unique_ptr<joints::JointSolver>     joint_solver;
-    /// The joints' parameters of the static stage's dynamic relaxation
-    /// (trapezoidal forces); its solver refers to them.
-    joints::JointParameters relaxation_joints;
     /// The dynamic stage's integrator (make_integrator()).
     std::unique_ptr<time::NewmarkIntegrator> integrator;
     /// Wall time of the steps' solves with the joints (the forward

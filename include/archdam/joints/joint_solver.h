@@ -232,7 +232,9 @@ namespace archdam::joints
     /// the solve, so that the contact problem keeps one index set).
     std::vector<bool> may_close;
 
-    const JointParameters     &p;
+    /// A copy: a solver may be made for settings that differ from the
+    /// case's (the static stage's relaxation uses the trapezoidal forces).
+    const JointParameters      p;
     const double               h;
     std::unique_ptr<JointLaw>  law;
     std::vector<LawParameters> laws;
