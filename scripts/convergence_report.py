@@ -12,6 +12,7 @@ import math
 import os
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -293,6 +294,8 @@ def report(args, meshes, series, height_series):
             if p is not None:
                 fe = f3 + (f3 - f2) / ((h2 / h3) ** p - 1.0)
                 order, estimate, against = f"{p:.2f}", f"{fe:.4g}", f"{percent(data[series[1]][0][k], fe):+.1f}"
+            elif (f1 - f2) * (f2 - f3) > 0:
+                order = "none fits (the changes shrink too slowly)"
             else:
                 order = "not monotone"
         cells = " | ".join(f"{v:.4g}" if v is not None else "–" for v in values)
@@ -355,6 +358,10 @@ def report(args, meshes, series, height_series):
         for ax, k in zip(axes.flat, keys):
             pts = [(data[m][1]["DOFs"], data[m][0][k], m) for m in names if k in data[m][0] and "DOFs" in data[m][1]]
             ax.semilogx([p[0] for p in pts], [p[1] for p in pts], "o-")
+            # the meshes' DOFs as the ticks (a range within one decade
+            # otherwise gets overlapping minor labels)
+            ax.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
+            ax.set_xticks([p[0] for p in pts], [f"{p[0] / 1e3:.0f}k" for p in pts])
             for x, y, m in pts:
                 ax.annotate(m, (x, y), fontsize=7)
             ax.set_title(k, fontsize=8)
