@@ -300,7 +300,6 @@ def report(args, meshes, series, height_series):
                 order = "not monotone"
         cells = " | ".join(f"{v:.4g}" if v is not None else "–" for v in values)
         lines.append(f"| {k} | {cells} | {finest} | {errors} | {order} | {estimate} | {against} |")
-    open(os.path.join(args.results, "convergence_tables.txt"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
 
     # each joint's peak opening on the meshes that ran the whole window
