@@ -13,6 +13,10 @@
 // time of the forward elimination and the backward substitution of one
 // solve. The solves are checked against a manufactured solution: b = Kbar x
 // for a known x, and the relative error of each factor's solution.
+// Then, on one factor of the library's order, the solves with MUMPS's
+// products of one column made by dgemv (time/single_column_products.h, the
+// library's way) and by the BLAS's dgemm, alternating, N solves each per
+// round, and the largest difference of the two solutions.
 //
 //   bench_factor_orders [CASE.prm] [--set "Section/Parameter=value"]...
 //                       [--rounds R] [--solves N]
@@ -25,6 +29,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/time/condensed_factorization.h>
+#include <archdam/time/single_column_products.h>
 
 #include <deal.II/base/timer.h>
 
@@ -45,6 +50,25 @@ namespace
     time::CondensedFactorization::Statistics statistics;
   };
 
+  /// @p solves solves of A x = b with @p factor; their mean elimination and
+  /// substitution times into @p r.
+  void
+  solve(const time::CondensedFactorization &factor, const Vector &b, const unsigned int solves,
+        Vector &x, Result &r)
+  {
+    const auto             before = factor.solve_times();
+    dealii::Vector<double> x_gamma;
+    for (unsigned int k = 0; k < solves; ++k)
+      {
+        factor.condense(b, x_gamma);
+        factor.solve_interface(x_gamma);
+        factor.expand(x_gamma, x);
+      }
+    const auto after = factor.solve_times();
+    r.elimination    = (after.elimination - before.elimination) / solves;
+    r.substitution   = (after.substitution - before.substitution) / solves;
+  }
+
   Result
   measure(const SparseMatrix &A, const std::vector<dealii::types::global_dof_index> &interface,
           const Ordering ordering, const Vector &b, const Vector &x_exact,
@@ -57,17 +81,8 @@ namespace
     const time::CondensedFactorization factor(A, false, interface, ordering);
     r.factorization = timer.wall_time();
     r.statistics    = factor.statistics();
-    Vector                 x(b);
-    dealii::Vector<double> x_gamma;
-    for (unsigned int k = 0; k < solves; ++k)
-      {
-        factor.condense(b, x_gamma);
-        factor.solve_interface(x_gamma);
-        factor.expand(x_gamma, x);
-      }
-    const auto times = factor.solve_times();
-    r.elimination    = times.elimination / solves;
-    r.substitution   = times.substitution / solves;
+    Vector x(b);
+    solve(factor, b, solves, x, r);
     x -= x_exact;
     r.error = x.linfty_norm() / x_exact.linfty_norm();
     return r;
@@ -169,5 +184,36 @@ main(int argc, char **argv)
   ratio("memory", mean[0].statistics.memory, mean[1].statistics.memory);
   ratio("elimination", mean[0].elimination, mean[1].elimination);
   ratio("substitution", mean[0].substitution, mean[1].substitution);
+
+  // The products of one column: dgemv against the BLAS's dgemm, on one
+  // factor, alternating.
+  const time::CondensedFactorization factor(A, false, interface, Ordering::nested_dissection);
+  Vector                             x_gemv(b), x_gemm(b);
+  Result                             gemv, gemm;
+  for (unsigned int r = 0; r < rounds; ++r)
+    for (const bool forward : {true, false})
+      {
+        Result one;
+        time::forward_single_column_products(forward);
+        solve(factor, b, solves, forward ? x_gemv : x_gemm, one);
+        auto &sum = forward ? gemv : gemm;
+        sum.elimination += one.elimination / rounds;
+        sum.substitution += one.substitution / rounds;
+      }
+  time::forward_single_column_products(true);
+  x_gemm -= x_gemv;
+  out << "\nsolves with MUMPS's products of one column by dgemv and by dgemm (" << rounds
+      << " round(s) of " << solves << " solves each, alternating)\n"
+      << std::left << std::setw(28) << "products of one column" << std::right
+      << std::setw(16) << "elimination [s]" << std::setw(17) << "substitution [s]" << "\n";
+  for (const auto &[name, m] : {std::pair<std::string, Result>{"dgemv", gemv}, {"dgemm", gemm}})
+    out << std::left << std::setw(28) << name << std::right << std::setprecision(3)
+        << std::setw(16) << m.elimination << std::setw(17) << m.substitution << "\n";
+  out << "\n";
+  bench::figure(out, "dgemv / dgemm, elimination") << gemv.elimination / gemm.elimination << "\n";
+  bench::figure(out, "dgemv / dgemm, substitution")
+    << gemv.substitution / gemm.substitution << "\n";
+  bench::figure(out, "largest difference of the two solutions / largest entry")
+    << x_gemm.linfty_norm() / x_gemv.linfty_norm() << "\n";
   return 0;
 }

@@ -9,9 +9,14 @@
 // the shape of K̄) and on a symmetric indefinite one (its block on half of the
 // unknowns negated, the shape of the coupled solid-water
 // matrix), the interface spread over the unknowns and, under MPI, the ranks.
+// And the BLAS products with one column that MUMPS's solves are made of
+// (time/single_column_products.h): dgemm with n = 1 (every transposition,
+// leading dimensions larger than the blocks) against the product summed
+// here, forwarded to dgemv, and the condensed solves going through it.
 
 #include <archdam/time/condensed_factorization.h>
 #include <archdam/time/factorized_operator.h>
+#include <archdam/time/single_column_products.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
@@ -23,8 +28,61 @@
 using namespace archdam;
 using namespace dealii;
 
+extern "C" void
+dgemm_(const char *, const char *, const int *, const int *, const int *, const double *,
+       const double *, const int *, const double *, const int *, const double *, double *,
+       const int *);
+
 namespace
 {
+  /// C = alpha op(A) op(B) + beta C through dgemm_ against the sums of the
+  /// definition, for one column (forwarded) and for three (the BLAS's own).
+  void
+  check_single_column_products()
+  {
+    std::mt19937                           random(3);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    const int                              m = 37, k = 23, lda = 41, ldb = 29, ldc = 40;
+    std::uint64_t                          calls_of_one_column = 0;
+    const std::uint64_t before = time::single_column_products_forwarded();
+    double                                 worst = 0.;
+    for (const int n : {1, 3})
+      for (const char ta : {'N', 'T'})
+        for (const char tb : {'N', 'T'})
+          {
+            std::vector<double> A(lda * std::max(m, k)), B(ldb * std::max(k, n)), C(ldc * n);
+            for (auto *v : {&A, &B, &C})
+              for (auto &x : *v)
+                x = uniform(random);
+            std::vector<double> reference(C);
+            const double        alpha = 0.7, beta = -1.3;
+            const auto a = [&](int i, int l) { return ta == 'N' ? A[i + l * lda] : A[l + i * lda]; };
+            const auto b = [&](int l, int j) { return tb == 'N' ? B[l + j * ldb] : B[j + l * ldb]; };
+            for (int j = 0; j < n; ++j)
+              for (int i = 0; i < m; ++i)
+                {
+                  double sum = 0.;
+                  for (int l = 0; l < k; ++l)
+                    sum += a(i, l) * b(l, j);
+                  reference[i + j * ldc] = alpha * sum + beta * reference[i + j * ldc];
+                }
+            dgemm_(&ta, &tb, &m, &n, &k, &alpha, A.data(), &lda, B.data(), &ldb, &beta,
+                   C.data(), &ldc);
+            for (int j = 0; j < n; ++j)
+              for (int i = 0; i < m; ++i)
+                worst = std::max(worst, std::abs(C[i + j * ldc] - reference[i + j * ldc]));
+            calls_of_one_column += n == 1;
+          }
+    testing::check_below("dgemm with one and with three columns, every transposition, "
+                         "against the sums, largest difference",
+                         worst, 1e-13);
+    testing::log() << "the " << calls_of_one_column << " products with one column went to dgemv, "
+                   << "those with three did not: "
+                   << testing::yes(time::single_column_products_forwarded() - before ==
+                                   calls_of_one_column)
+                   << std::endl;
+  }
+
   /// A on an n^3 grid: 7-point Laplacian plus @p mass on the diagonal; with
   /// @p indefinite the block of the second half of the unknowns with itself
   /// is negated, which keeps A symmetric and makes it indefinite. Rows and
@@ -164,12 +222,20 @@ namespace
         plain.solve(reference, b_minus_q);
 
         dealii::Vector<double> y;
+        const std::uint64_t    forwarded_before = time::single_column_products_forwarded();
         condensed.condense(b, y);
         dealii::Vector<double> x_gamma(k);
         for (unsigned int g = 0; g < k; ++g)
           x_gamma[g] = y[g] - q[g];
         condensed.solve_interface(x_gamma);
         condensed.expand(x_gamma, x);
+        if (repeat == 0)
+          testing::log() << name << ": MUMPS's forward elimination and backward substitution "
+                         << "made products with one column through dgemv: "
+                         << testing::yes(Utilities::MPI::min(
+                              time::single_column_products_forwarded() > forwarded_before ? 1 : 0,
+                              MPI_COMM_WORLD) == 1)
+                         << std::endl;
         x -= reference;
         testing::check_below(name + ": condense, interface solve, expand against A^-1 (b - q)," +
                                (repeat == 0 ? " first" : " second") +
@@ -183,6 +249,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  check_single_column_products();
   check("positive definite", false);
   check("indefinite", true);
 }
