@@ -21,6 +21,11 @@ motion and time step on each:
   rockNN      the q2-113 dam with the rock's cell size NN m instead of 45 m
               (the rock's own sensitivity: rock60, rock35; 30 m cells put
               a point of the MTF outside the rock at 5 ms)
+  extentNN    the production mesh with the rock reaching NN/100 of the dam's
+              height below the base, downstream and to the sides instead of
+              one height (extent050, extent075); upstream it keeps one height,
+              where a shorter rock puts a point of the MTF into the canyon's
+              water at 5 ms
 
 For each mesh up to six runs (each kept when its summary.json exists):
 
@@ -80,6 +85,11 @@ def mesh_settings(mesh):
         # rockNN: the q2-113 dam with a rock cell size of NN m
         degree, nb, nt, nz = MESHES["q2-113"]
         extra = [f"Mesh/Arch dam/Rock cell size={mesh[4:]}"]
+    elif mesh.startswith("extent"):
+        degree, nb, nt, nz = MESHES["production"]
+        e = int(mesh[6:]) / 100
+        extra = [f"Mesh/Arch dam/Foundation {where}={e}"
+                 for where in ["depth", "extent downstream", "extent to the sides"]]
     else:
         degree, nb, nt, nz = MESHES[mesh]
         extra = []
