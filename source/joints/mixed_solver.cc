@@ -27,18 +27,6 @@ namespace archdam::joints
                        static_cast<int>(pairs[j / dim].joint)) > 1)
             C[static_cast<std::size_t>(j) * m + i] = 0.;
     }
-
-    /// C = B A^{-1} B^T is symmetric; its two triangles, computed apart,
-    /// differ by round-off. Their mean makes C's rows its columns exactly,
-    /// which the contact problem reads contiguously.
-    void
-    make_symmetric(std::vector<double> &C)
-    {
-      const std::size_t m = std::lround(std::sqrt(static_cast<double>(C.size())));
-      for (std::size_t j = 0; j < m; ++j)
-        for (std::size_t i = j + 1; i < m; ++i)
-          C[j * m + i] = C[i * m + j] = 0.5 * (C[j * m + i] + C[i * m + j]);
-    }
   } // namespace
 
   std::vector<double>
@@ -201,12 +189,11 @@ namespace archdam::joints
     const unsigned int m = dim * pairs.size();
     if (m == 0)
       return;
-    // C is symmetric (made so where it is built), so a row of C is read
-    // as its column: contiguous in memory.
-    const auto flexibility_row = [&](const unsigned int row) {
-      return &C[static_cast<std::size_t>(row) * m];
+    // (h C)(row, j); C is stored by columns.
+    const double hc          = contact_h();
+    const auto   flexibility = [&](const unsigned int j, const unsigned int row) {
+      return hc * C[static_cast<std::size_t>(j) * m + row];
     };
-    const double hc = contact_h();
     // Row dim i + k of the system (into @p row, unless null) and its
     // right-hand side, from the pair's current state. Only the rows that
     // enter a new LU or its update are built; the others give their
@@ -219,7 +206,7 @@ namespace archdam::joints
         {
           // f = 0, scaled like the flexibility rows (metres) for the pivoting
           if (row)
-            row[r_ik] = hc * flexibility_row(r_ik)[r_ik];
+            row[r_ik] = flexibility(r_ik, r_ik);
           return 0.;
         }
       if (k > 0 && state[i] == PairState::slip)
@@ -236,12 +223,9 @@ namespace archdam::joints
               // the LU's pivoting sees rows of one scale.
               // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - target_t
               if (kappa > 0.)
-                {
-                  const double *c1 = flexibility_row(dim * i + 1), *c2 = flexibility_row(dim * i + 2);
-                  const double  p1 = kappa * hc * P(k, 1), p2 = kappa * hc * P(k, 2);
-                  for (unsigned int j = 0; j < m; ++j)
-                    row[j] = p1 * c1[j] + p2 * c2[j];
-                }
+                for (unsigned int j = 0; j < m; ++j)
+                  row[j] = kappa * (P(k, 1) * flexibility(j, dim * i + 1) +
+                                    P(k, 2) * flexibility(j, dim * i + 2));
               for (const unsigned int l : {1u, 2u})
                 row[dim * i + l] += ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
               row[dim * i] += strength_i.friction * d[k] / r;
@@ -253,11 +237,8 @@ namespace archdam::joints
         }
       // (h C f)_ik = s_ik - w_target,k
       if (row)
-        {
-          const double *c = flexibility_row(r_ik);
-          for (unsigned int j = 0; j < m; ++j)
-            row[j] = hc * c[j];
-        }
+        for (unsigned int j = 0; j < m; ++j)
+          row[j] = flexibility(j, r_ik);
       return s[r_ik] - target[r_ik];
     };
     // What a pair's rows depend on besides C, h and r.
@@ -542,7 +523,6 @@ namespace archdam::joints
         else
           C = flexibility_matrix(pairs, A_factor, r, 64,
                                  p.coupling == Coupling::neighbouring_joints);
-        make_symmetric(C);
         build_time =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         augmentation = augmentation_of(C, contact_h());
