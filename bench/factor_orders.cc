@@ -7,6 +7,7 @@
 //   nested dissection: METIS on the node graph (time/fill_reducing_order.h,
 //                      the library's order)
 //   PORD:              MUMPS's own order (the library's order before)
+//   SCOTCH:            SCOTCH's nested dissection of the same node graph
 // For each: the wall time of the factorization (order, analysis and
 // factorization), the factor's entries, the elimination's operations and the
 // memory MUMPS used (INFOG(29), RINFOG(3), INFOG(22)), and the mean wall
@@ -17,9 +18,16 @@
 // products of one column made by dgemv (time/single_column_products.h, the
 // library's way) and by the BLAS's dgemm, alternating, N solves each per
 // round, and the largest difference of the two solutions.
+// Then MUMPS's block low-rank factorization (ICNTL(35) = 2: compressed
+// factors used in the solves) at each dropping tolerance CNTL(7) of
+// --low-rank (default 1e-10, 1e-8, 1e-6, 1e-4) against the full-rank factor
+// of the library's order, one factorization alive at a time: the same
+// columns as the orders' table, the resident memory of the process with the
+// factor alive, and the largest difference of the solution from the
+// full-rank factor's (the accuracy a step would lose).
 //
 //   bench_factor_orders [CASE.prm] [--set "Section/Parameter=value"]...
-//                       [--rounds R] [--solves N]
+//                       [--rounds R] [--solves N] [--low-rank TOL,TOL,...]
 //
 // Defaults: the reference case, --rounds 1 (each factorization takes about
 // a minute there), --solves 5. Rounds alternate the orders, one
@@ -34,6 +42,7 @@
 #include <deal.II/base/timer.h>
 
 #include <iomanip>
+#include <tuple>
 #include <iostream>
 #include <random>
 
@@ -47,6 +56,7 @@ namespace
   struct Result
   {
     double factorization = 0., elimination = 0., substitution = 0., error = 0.;
+    double resident = 0.; ///< the process's resident memory with the factor alive [GB]
     time::CondensedFactorization::Statistics statistics;
   };
 
@@ -69,23 +79,72 @@ namespace
     r.substitution   = (after.substitution - before.substitution) / solves;
   }
 
+  /// Factorize A in @p ordering (block low-rank if @p low_rank > 0), solve
+  /// @p solves times; the solution into @p x.
   Result
   measure(const SparseMatrix &A, const std::vector<dealii::types::global_dof_index> &interface,
           const Ordering ordering, const Vector &b, const Vector &x_exact,
-          const unsigned int solves)
+          const unsigned int solves, Vector &x, const double low_rank = 0.)
   {
     Result        r;
     dealii::Timer timer;
     // The effective matrix of the coupled system is indefinite: LDL^T, as
     // the integrator factorizes it.
-    const time::CondensedFactorization factor(A, false, interface, ordering);
+    const time::CondensedFactorization factor(A, false, interface, ordering, low_rank);
     r.factorization = timer.wall_time();
     r.statistics    = factor.statistics();
-    Vector x(b);
+    r.resident      = bench::memory_gb("VmRSS");
     solve(factor, b, solves, x, r);
-    x -= x_exact;
-    r.error = x.linfty_norm() / x_exact.linfty_norm();
+    Vector error(x);
+    error -= x_exact;
+    r.error = error.linfty_norm() / x_exact.linfty_norm();
     return r;
+  }
+
+  void
+  table_header(std::ostream &out, const std::string &first)
+  {
+    out << std::left << std::setw(28) << first << std::right << std::setw(12) << "factor [s]"
+        << std::setw(14) << "entries" << std::setw(14) << "operations" << std::setw(13)
+        << "memory [GB]" << std::setw(14) << "resident [GB]" << std::setw(16)
+        << "elimination [s]" << std::setw(17) << "substitution [s]" << std::setw(12) << "error"
+        << "\n";
+  }
+
+  void
+  table_row(std::ostream &out, const std::string &first, const Result &m)
+  {
+    out << std::left << std::setw(28) << first << std::right << std::setprecision(3)
+        << std::setw(12) << m.factorization << std::setw(14) << m.statistics.entries
+        << std::setw(14) << m.statistics.operations << std::setw(13)
+        << 1e-9 * m.statistics.memory << std::setw(14) << m.resident << std::setw(16)
+        << m.elimination << std::setw(17) << m.substitution << std::setw(12) << m.error << "\n";
+  }
+
+  /// "LABEL, quantity: a / b" for each column of the tables.
+  void
+  ratios(std::ostream &out, const std::string &label, const Result &a, const Result &b)
+  {
+    out << "\n";
+    for (const auto &[name, x, y] : std::vector<std::tuple<std::string, double, double>>{
+           {"factorization time", a.factorization, b.factorization},
+           {"factor entries", a.statistics.entries, b.statistics.entries},
+           {"operations", a.statistics.operations, b.statistics.operations},
+           {"MUMPS memory", a.statistics.memory, b.statistics.memory},
+           {"resident memory", a.resident, b.resident},
+           {"elimination", a.elimination, b.elimination},
+           {"substitution", a.substitution, b.substitution}})
+      bench::figure(out, label + ", " + name) << std::setprecision(3) << x / y << "\n";
+  }
+
+  std::vector<double>
+  tolerances(const std::string &list)
+  {
+    std::vector<double> t;
+    std::istringstream  in(list);
+    for (std::string item; std::getline(in, item, ',');)
+      t.push_back(std::stod(item));
+    return t;
   }
 } // namespace
 
@@ -96,6 +155,7 @@ main(int argc, char **argv)
   std::string              file = "prm/paper_235m_dam.prm";
   std::vector<std::string> overrides;
   unsigned int             rounds = 1, solves = 5;
+  std::vector<double>      low_rank = {1e-10, 1e-8, 1e-6, 1e-4};
   for (int i = 1; i < argc; ++i)
     {
       const std::string a = argv[i];
@@ -105,6 +165,8 @@ main(int argc, char **argv)
         rounds = std::stoi(argv[++i]);
       else if (a == "--solves" && i + 1 < argc)
         solves = std::stoi(argv[++i]);
+      else if (a == "--low-rank" && i + 1 < argc)
+        low_rank = tolerances(argv[++i]);
       else
         file = a;
     }
@@ -142,19 +204,19 @@ main(int argc, char **argv)
   A.vmult(b, x_exact);
 
   const std::vector<std::pair<Ordering, std::string>> orders = {
-    {Ordering::nested_dissection, "nested dissection (METIS)"}, {Ordering::pord, "PORD"}};
+    {Ordering::nested_dissection, "nested dissection (METIS)"},
+    {Ordering::pord, "PORD"},
+    {Ordering::scotch, "nested dissection (SCOTCH)"}};
   std::vector<std::vector<Result>> results(orders.size());
+  Vector                           x(b);
   for (unsigned int r = 0; r < rounds; ++r)
     for (unsigned int o = 0; o < orders.size(); ++o)
-      results[o].push_back(measure(A, interface, orders[o].first, b, x_exact, solves));
+      results[o].push_back(measure(A, interface, orders[o].first, b, x_exact, solves, x));
 
   out << "\nper order, means over " << rounds << " round(s), " << solves
       << " solves each; peak resident memory of the process " << std::setprecision(3)
-      << bench::memory_gb("VmHWM") << " GB\n"
-      << std::left << std::setw(28) << "order" << std::right << std::setw(12) << "factor [s]"
-      << std::setw(14) << "entries" << std::setw(14) << "operations" << std::setw(13)
-      << "memory [GB]" << std::setw(16) << "elimination [s]" << std::setw(17)
-      << "substitution [s]" << std::setw(12) << "error" << "\n";
+      << bench::memory_gb("VmHWM") << " GB\n";
+  table_header(out, "order");
   std::vector<Result> mean(orders.size());
   for (unsigned int o = 0; o < orders.size(); ++o)
     {
@@ -166,54 +228,75 @@ main(int argc, char **argv)
           mean[o].error = std::max(mean[o].error, r.error);
         }
       mean[o].statistics = results[o].front().statistics;
-      const auto &m      = mean[o];
-      out << std::left << std::setw(28) << orders[o].second << std::right << std::setprecision(3)
-          << std::setw(12) << m.factorization << std::setw(14) << m.statistics.entries
-          << std::setw(14) << m.statistics.operations << std::setw(13)
-          << 1e-9 * m.statistics.memory << std::setw(16) << m.elimination << std::setw(17)
-          << m.substitution << std::setw(12) << m.error << "\n";
+      mean[o].resident   = results[o].front().resident;
+      table_row(out, orders[o].second, mean[o]);
     }
-  const auto ratio = [&](const std::string &name, const double nd, const double pord) {
-    bench::figure(out, "nested dissection / PORD, " + name) << std::setprecision(3) << nd / pord
-                                                           << "\n";
-  };
-  out << "\n";
-  ratio("factorization time", mean[0].factorization, mean[1].factorization);
-  ratio("factor entries", mean[0].statistics.entries, mean[1].statistics.entries);
-  ratio("operations", mean[0].statistics.operations, mean[1].statistics.operations);
-  ratio("memory", mean[0].statistics.memory, mean[1].statistics.memory);
-  ratio("elimination", mean[0].elimination, mean[1].elimination);
-  ratio("substitution", mean[0].substitution, mean[1].substitution);
+  ratios(out, "nested dissection / PORD", mean[0], mean[1]);
+  ratios(out, "SCOTCH / METIS", mean[2], mean[0]);
 
   // The products of one column: dgemv against the BLAS's dgemm, on one
   // factor, alternating.
-  const time::CondensedFactorization factor(A, false, interface, Ordering::nested_dissection);
-  Vector                             x_gemv(b), x_gemm(b);
-  Result                             gemv, gemm;
-  for (unsigned int r = 0; r < rounds; ++r)
-    for (const bool forward : {true, false})
-      {
-        Result one;
-        time::forward_single_column_products(forward);
-        solve(factor, b, solves, forward ? x_gemv : x_gemm, one);
-        auto &sum = forward ? gemv : gemm;
-        sum.elimination += one.elimination / rounds;
-        sum.substitution += one.substitution / rounds;
-      }
-  time::forward_single_column_products(true);
-  x_gemm -= x_gemv;
-  out << "\nsolves with MUMPS's products of one column by dgemv and by dgemm (" << rounds
-      << " round(s) of " << solves << " solves each, alternating)\n"
-      << std::left << std::setw(28) << "products of one column" << std::right
-      << std::setw(16) << "elimination [s]" << std::setw(17) << "substitution [s]" << "\n";
-  for (const auto &[name, m] : {std::pair<std::string, Result>{"dgemv", gemv}, {"dgemm", gemm}})
-    out << std::left << std::setw(28) << name << std::right << std::setprecision(3)
-        << std::setw(16) << m.elimination << std::setw(17) << m.substitution << "\n";
-  out << "\n";
-  bench::figure(out, "dgemv / dgemm, elimination") << gemv.elimination / gemm.elimination << "\n";
-  bench::figure(out, "dgemv / dgemm, substitution")
-    << gemv.substitution / gemm.substitution << "\n";
-  bench::figure(out, "largest difference of the two solutions / largest entry")
-    << x_gemm.linfty_norm() / x_gemv.linfty_norm() << "\n";
+  {
+    const time::CondensedFactorization factor(A, false, interface, Ordering::nested_dissection);
+    Vector                             x_gemv(b), x_gemm(b);
+    Result                             gemv, gemm;
+    for (unsigned int r = 0; r < rounds; ++r)
+      for (const bool forward : {true, false})
+        {
+          Result one;
+          time::forward_single_column_products(forward);
+          solve(factor, b, solves, forward ? x_gemv : x_gemm, one);
+          auto &sum = forward ? gemv : gemm;
+          sum.elimination += one.elimination / rounds;
+          sum.substitution += one.substitution / rounds;
+        }
+    time::forward_single_column_products(true);
+    x_gemm -= x_gemv;
+    out << "\nsolves with MUMPS's products of one column by dgemv and by dgemm (" << rounds
+        << " round(s) of " << solves << " solves each, alternating)\n"
+        << std::left << std::setw(28) << "products of one column" << std::right
+        << std::setw(16) << "elimination [s]" << std::setw(17) << "substitution [s]" << "\n";
+    for (const auto &[name, m] : {std::pair<std::string, Result>{"dgemv", gemv}, {"dgemm", gemm}})
+      out << std::left << std::setw(28) << name << std::right << std::setprecision(3)
+          << std::setw(16) << m.elimination << std::setw(17) << m.substitution << "\n";
+    out << "\n";
+    bench::figure(out, "dgemv / dgemm, elimination") << gemv.elimination / gemm.elimination << "\n";
+    bench::figure(out, "dgemv / dgemm, substitution")
+      << gemv.substitution / gemm.substitution << "\n";
+    bench::figure(out, "largest difference of the two solutions / largest entry")
+      << x_gemm.linfty_norm() / x_gemv.linfty_norm() << "\n";
+  }
+
+  // Block low-rank factors against the full-rank one, one alive at a time.
+  if (!low_rank.empty())
+    {
+      Vector       x_full(b), x_low(b);
+      const Result full =
+        measure(A, interface, Ordering::nested_dissection, b, x_exact, solves, x_full);
+      out << "\nblock low-rank factorization (ICNTL(35) = 2, nested dissection), " << solves
+          << " solves each; \"change\" is the largest difference of the solution from the "
+             "full-rank factor's over its largest entry\n";
+      table_header(out, "factor");
+      table_row(out, "full rank", full);
+      std::vector<std::pair<double, Result>> compressed;
+      std::vector<double>                    change;
+      for (const double tolerance : low_rank)
+        {
+          compressed.emplace_back(tolerance, measure(A, interface, Ordering::nested_dissection,
+                                                     b, x_exact, solves, x_low, tolerance));
+          x_low -= x_full;
+          change.push_back(x_low.linfty_norm() / x_full.linfty_norm());
+          std::ostringstream name;
+          name << "low rank, CNTL(7) = " << tolerance;
+          table_row(out, name.str(), compressed.back().second);
+        }
+      for (unsigned int k = 0; k < compressed.size(); ++k)
+        {
+          std::ostringstream label;
+          label << "low rank " << compressed[k].first << " / full rank";
+          ratios(out, label.str(), compressed[k].second, full);
+          bench::figure(out, label.str() + ", change of the solution") << change[k] << "\n";
+        }
+    }
   return 0;
 }

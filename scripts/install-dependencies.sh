@@ -8,6 +8,7 @@ packages=(
   cmake make g++ perl             # build and deal.II's test macros
   libdeal.ii-dev                  # deal.II 9.4 with PETSc/MUMPS, Trilinos, HDF5, MPI
   libmumps-dev                    # MUMPS directly: the factorization condensed on the joints
+  libscotch-dev                   # SCOTCH's nested dissection, an order of that factorization
   openmpi-bin                     # mpirun for the MPI tests
   libopenblas0-pthread            # 3-5x faster factorization than reference BLAS
   numdiff                         # test output comparison

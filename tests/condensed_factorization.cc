@@ -13,6 +13,9 @@
 // (time/single_column_products.h): dgemm with n = 1 (every transposition,
 // leading dimensions larger than the blocks) against the product summed
 // here, forwarded to dgemv, and the condensed solves going through it.
+// The other orders (SCOTCH's nested dissection, MUMPS's PORD) give the same
+// solves; the block low-rank factors are compressed and give the full-rank
+// factors' solves to about their tolerance.
 
 #include <archdam/time/condensed_factorization.h>
 #include <archdam/time/factorized_operator.h>
@@ -129,22 +132,110 @@ namespace
     A.compress(VectorOperation::insert);
   }
 
+  /// x = A^{-1} (b - q) through condense(), S x_Γ = y - q, expand().
   void
-  check(const std::string &name, const bool indefinite)
+  solve_with_interface_load(const time::CondensedFactorization &factor, const archdam::Vector &b,
+                            const std::vector<double> &q, archdam::Vector &x)
   {
-    const unsigned int n = 12, N = n * n * n;
+    dealii::Vector<double> y;
+    factor.condense(b, y);
+    for (unsigned int g = 0; g < q.size(); ++g)
+      y[g] -= q[g];
+    factor.solve_interface(y);
+    factor.expand(y, x);
+  }
+
+  /// The interface: every 17th unknown (spread over the grid and the ranks).
+  std::vector<types::global_dof_index>
+  spread_interface(const unsigned int N)
+  {
+    std::vector<types::global_dof_index> gamma;
+    for (unsigned int g = 3; g < N; g += 17)
+      gamma.push_back(g);
+    return gamma;
+  }
+
+  IndexSet
+  owned_rows(const unsigned int N)
+  {
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
     IndexSet           owned(N);
     owned.add_range(N * rank / n_ranks, N * (rank + 1) / n_ranks);
-    archdam::SparseMatrix A;
-    make_matrix(n, 0.5, indefinite, A, owned);
+    return owned;
+  }
 
-    // The interface: every 17th unknown (spread over the grid and the ranks).
-    std::vector<types::global_dof_index> gamma;
-    for (unsigned int g = 3; g < N; g += 17)
-      gamma.push_back(g);
-    const unsigned int k = gamma.size();
+  /// The matrix of make_matrix() on an n^3 grid into @p A; the rows owned
+  /// here and the interface.
+  std::pair<IndexSet, std::vector<types::global_dof_index>>
+  grid_problem(const unsigned int n, const bool indefinite, archdam::SparseMatrix &A)
+  {
+    const IndexSet owned = owned_rows(n * n * n);
+    make_matrix(n, 0.5, indefinite, A, owned);
+    return {owned, spread_interface(n * n * n)};
+  }
+
+  /// MUMPS's block low-rank factors (ICNTL(35), CNTL(7) = 1e-6) against the
+  /// full-rank factors on a grid whose fronts are large enough to be
+  /// compressed (24^3 unknowns; 0.90 of the entries here): fewer entries,
+  /// the same solve to within a few orders of the tolerance
+  /// (bench_factor_orders measures them on the reference case); a negative
+  /// tolerance is refused.
+  void
+  check_low_rank(const std::string &name, const bool indefinite)
+  {
+    const unsigned int    n = 24, N = n * n * n;
+    archdam::SparseMatrix A;
+    const auto [owned, gamma] = grid_problem(n, indefinite, A);
+    using Ordering            = time::CondensedFactorization::Ordering;
+    const time::CondensedFactorization full(A, !indefinite, gamma);
+    const time::CondensedFactorization low_rank(A, !indefinite, gamma,
+                                                Ordering::nested_dissection, 1e-6);
+    testing::check_below(name + ": block low-rank factors with CNTL(7) = 1e-6, their entries "
+                                "against the full-rank factors'",
+                         low_rank.statistics().entries / full.statistics().entries, 0.95);
+
+    std::mt19937                           random(11);
+    std::uniform_real_distribution<double> uniform(-1., 1.);
+    archdam::Vector b(owned, MPI_COMM_WORLD), x_full(owned, MPI_COMM_WORLD),
+      x_low(owned, MPI_COMM_WORLD);
+    for (unsigned int g = 0; g < N; ++g)
+      {
+        const double v = uniform(random); // the same sequence on every rank
+        if (owned.is_element(g))
+          b(g) = v;
+      }
+    b.compress(VectorOperation::insert);
+    std::vector<double> q(gamma.size());
+    for (auto &v : q)
+      v = uniform(random);
+    solve_with_interface_load(full, b, q, x_full);
+    solve_with_interface_load(low_rank, b, q, x_low);
+    x_low -= x_full;
+    testing::check_below(name + ": block low-rank factors, the solve against the full-rank "
+                                "factors', largest difference relative to the solution's largest",
+                         x_low.linfty_norm() / x_full.linfty_norm(), 1e-4);
+
+    bool refused = false;
+    try
+      {
+        time::CondensedFactorization(A, !indefinite, gamma, Ordering::nested_dissection, -1e-9);
+      }
+    catch (const ExceptionBase &e)
+      {
+        refused = std::string(e.what()).find("low-rank tolerance") != std::string::npos;
+      }
+    testing::log() << name << ": a negative low-rank tolerance refused: " << testing::yes(refused)
+                   << std::endl;
+  }
+
+  void
+  check(const std::string &name, const bool indefinite)
+  {
+    const unsigned int    n = 12, N = n * n * n;
+    archdam::SparseMatrix A;
+    const auto [owned, gamma] = grid_problem(n, indefinite, A);
+    const unsigned int k      = gamma.size();
 
     time::FactorizedOperator     plain;
     // MUMPS's LDL^T through PETSc for the indefinite case (Cholesky would fail).
@@ -202,9 +293,9 @@ namespace
     std::uniform_real_distribution<double> uniform(-1., 1.);
     archdam::Vector b(owned, MPI_COMM_WORLD), x(owned, MPI_COMM_WORLD),
       reference(owned, MPI_COMM_WORLD);
+    std::vector<double> q(k);
     for (unsigned int repeat = 0; repeat < 2; ++repeat)
       {
-        std::vector<double> q(k);
         for (auto &v : q)
           v = uniform(random);
         for (unsigned int g = 0; g < N; ++g)
@@ -221,14 +312,8 @@ namespace
         b_minus_q.compress(VectorOperation::add);
         plain.solve(reference, b_minus_q);
 
-        dealii::Vector<double> y;
-        const std::uint64_t    forwarded_before = time::single_column_products_forwarded();
-        condensed.condense(b, y);
-        dealii::Vector<double> x_gamma(k);
-        for (unsigned int g = 0; g < k; ++g)
-          x_gamma[g] = y[g] - q[g];
-        condensed.solve_interface(x_gamma);
-        condensed.expand(x_gamma, x);
+        const std::uint64_t forwarded_before = time::single_column_products_forwarded();
+        solve_with_interface_load(condensed, b, q, x);
         if (repeat == 0)
           testing::log() << name << ": MUMPS's forward elimination and backward substitution "
                          << "made products with one column through dgemv: "
@@ -242,6 +327,23 @@ namespace
                                " solve, largest difference relative to the solution's largest",
                              x.linfty_norm() / reference.linfty_norm(), 1e-10);
       }
+
+    // SCOTCH's nested dissection instead of METIS's and MUMPS's PORD: the
+    // same solution (an order that is not a permutation would fail in MUMPS
+    // or solve wrongly).
+    for (const auto &[order_name, order] :
+         {std::pair<std::string, time::CondensedFactorization::Ordering>{
+            "SCOTCH", time::CondensedFactorization::Ordering::scotch},
+          {"PORD", time::CondensedFactorization::Ordering::pord}})
+      {
+        const time::CondensedFactorization other(A, !indefinite, gamma, order);
+        solve_with_interface_load(other, b, q, x);
+        x -= reference;
+        testing::check_below(name + ": ordered by " + order_name +
+                               ", the second solve against A^-1 (b - q), largest difference "
+                               "relative to the solution's largest",
+                             x.linfty_norm() / reference.linfty_norm(), 1e-10);
+      }
   }
 } // namespace
 
@@ -252,4 +354,6 @@ main(int argc, char **argv)
   check_single_column_products();
   check("positive definite", false);
   check("indefinite", true);
+  check_low_rank("positive definite", false);
+  check_low_rank("indefinite", true);
 }

@@ -60,7 +60,8 @@ namespace archdam::time
 
   CondensedFactorization::CondensedFactorization(
     const SparseMatrix &A, const bool positive_definite,
-    const std::vector<dealii::types::global_dof_index> &interface, const Ordering ordering)
+    const std::vector<dealii::types::global_dof_index> &interface, const Ordering ordering,
+    const double low_rank_tolerance)
     : mumps(std::make_unique<Mumps>())
     , gamma(interface)
   {
@@ -69,6 +70,8 @@ namespace archdam::time
                   std::adjacent_find(gamma.begin(), gamma.end()) == gamma.end() &&
                   (gamma.empty() || gamma.back() < A.m()),
                 ExcMessage("The condensed interface must be sorted, unique DOFs of the matrix."));
+    AssertThrow(low_rank_tolerance >= 0.,
+                ExcMessage("The low-rank tolerance of a factorization must not be negative."));
     auto &m    = *mumps;
     m.comm     = A.get_mpi_communicator();
     const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
@@ -113,9 +116,9 @@ namespace archdam::time
 
     // The ordering: with a Schur complement MUMPS orders by AMD alone, which
     // on these meshes gives 3-4 times the operations of PORD. So the whole
-    // matrix is ordered first, by METIS's nested dissection (computed here:
-    // Debian's MUMPS has no METIS) or by PORD, and the order with the
-    // interface moved last is given to MUMPS.
+    // matrix is ordered first, by METIS's or SCOTCH's nested dissection
+    // (computed here: Debian's MUMPS has neither) or by PORD, and the order
+    // with the interface moved last is given to MUMPS.
     std::vector<MUMPS_INT> by_position; // 1-based unknowns in elimination order
     if (ordering == Ordering::pord)
       {
@@ -141,7 +144,10 @@ namespace archdam::time
                 all_rows.insert(all_rows.end(), rows[r].begin(), rows[r].end());
                 all_cols.insert(all_cols.end(), cols[r].begin(), cols[r].end());
               }
-            by_position = nested_dissection_order(m.id.n, all_rows, all_cols);
+            by_position = nested_dissection_order(m.id.n, all_rows, all_cols,
+                                                  ordering == Ordering::scotch ?
+                                                    Dissector::scotch :
+                                                    Dissector::metis);
             for (auto &i : by_position)
               ++i;
           }
@@ -171,6 +177,11 @@ namespace archdam::time
       }
     m.icntl(7)  = 1; // the order above
     m.icntl(19) = 1; // the Schur complement centralized on rank 0
+    if (low_rank_tolerance > 0.)
+      {
+        m.icntl(35)  = 2;                  // block low-rank factors, kept compressed for the solves
+        m.id.cntl[6] = low_rank_tolerance; // CNTL(7): the blocks' dropping tolerance
+      }
     m.run(1, "analysis");
     m.run(2, "factorization");
     // The solves need the factors only: MUMPS's copy of the matrix goes.
@@ -179,8 +190,9 @@ namespace archdam::time
     std::vector<MUMPS_INT>().swap(m.irn);
     std::vector<MUMPS_INT>().swap(m.jcn);
     std::vector<double>().swap(m.values);
-    // INFOG(29) < 0 counts millions (MUMPS's convention for large factors).
-    const int entries = m.id.infog[28];
+    // INFOG(29) < 0 counts millions (MUMPS's convention for large factors);
+    // with low-rank factors INFOG(35) counts the entries they keep.
+    const int entries = m.id.infog[low_rank_tolerance > 0. ? 34 : 28];
     stats.entries     = entries < 0 ? -1e6 * entries : double(entries);
     stats.operations  = m.id.rinfog[2];
     stats.memory      = 1e6 * m.id.infog[21]; // INFOG(22): MB used, all processes

@@ -4,6 +4,9 @@
 
 #include <metis.h>
 
+#include <cstdio> // scotch.h needs FILE
+#include <scotch.h>
+
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -58,7 +61,7 @@ namespace archdam::time
 
   std::vector<std::int32_t>
   nested_dissection_order(const std::int32_t n, const std::vector<std::int32_t> &rows,
-                          const std::vector<std::int32_t> &cols)
+                          const std::vector<std::int32_t> &cols, const Dissector dissector)
   {
     AssertThrow(rows.size() == cols.size(),
                 dealii::ExcMessage("nested_dissection_order: rows and columns differ in size."));
@@ -121,12 +124,31 @@ namespace archdam::time
         std::sort(adjncy.begin() + first, adjncy.end());
         adjncy.erase(std::unique(adjncy.begin() + first, adjncy.end()), adjncy.end());
         AssertThrow(adjncy.size() < static_cast<std::size_t>(std::numeric_limits<idx_t>::max()),
-                    dealii::ExcMessage("nested_dissection_order: the graph is too large for METIS."));
+                    dealii::ExcMessage("nested_dissection_order: the graph is too large to dissect."));
         xadj[g + 1] = static_cast<idx_t>(adjncy.size());
       }
 
     std::vector<idx_t> order(n_groups), position(n_groups);
-    if (n_groups > 0)
+    if (n_groups > 0 && dissector == Dissector::scotch)
+      {
+        // SCOTCH's permtab is METIS's position, its peritab METIS's order.
+        static_assert(sizeof(SCOTCH_Num) == sizeof(idx_t),
+                      "SCOTCH and METIS index the graph alike");
+        SCOTCH_Graph graph_s;
+        SCOTCH_Strat strategy;
+        SCOTCH_graphInit(&graph_s);
+        SCOTCH_stratInit(&strategy);
+        int status = SCOTCH_graphBuild(&graph_s, 0, n_groups, xadj.data(), nullptr, weight.data(),
+                                       nullptr, xadj[n_groups], adjncy.data(), nullptr);
+        if (status == 0)
+          status = SCOTCH_graphOrder(&graph_s, &strategy, position.data(), order.data(), nullptr,
+                                     nullptr, nullptr);
+        SCOTCH_stratExit(&strategy);
+        SCOTCH_graphExit(&graph_s);
+        AssertThrow(status == 0, dealii::ExcMessage("SCOTCH_graphOrder failed with status " +
+                                                    std::to_string(status) + "."));
+      }
+    else if (n_groups > 0)
       {
         idx_t options[METIS_NOPTIONS];
         METIS_SetDefaultOptions(options);
@@ -138,8 +160,8 @@ namespace archdam::time
                                        std::to_string(status) + "."));
       }
 
-    // Groups in METIS's order (order[p] is the group at position p), each
-    // group's unknowns together.
+    // Groups in the dissection's order (order[p] is the group at position
+    // p), each group's unknowns together.
     std::vector<std::int64_t> first_of(n_groups + 1, 0);
     for (idx_t p = 0; p < n_groups; ++p)
       first_of[p + 1] = first_of[p] + weight[order[p]];

@@ -32,15 +32,23 @@ namespace archdam::time
     /// The fill-reducing order of the unknowns before the interface.
     enum class Ordering
     {
-      nested_dissection, ///< METIS (time/fill_reducing_order.h)
+      nested_dissection, ///< METIS's (time/fill_reducing_order.h)
+      scotch,            ///< SCOTCH's nested dissection (time/fill_reducing_order.h)
       pord               ///< MUMPS's PORD
     };
 
     /// Factorize A (Cholesky if @p positive_definite, else LDL^T) with the
     /// global unknowns @p interface (sorted, the same on every rank) last.
+    /// A @p low_rank_tolerance > 0 asks for MUMPS's block low-rank
+    /// factorization with that dropping tolerance (ICNTL(35) = 2, CNTL(7)):
+    /// the factors are kept and used in the solves compressed, and the
+    /// solves are approximate to about that tolerance. 0, the default, is
+    /// the exact (full-rank) factorization; doc/performance.md §8 gives the
+    /// measurements behind that default.
     CondensedFactorization(const SparseMatrix &A, bool positive_definite,
                            const std::vector<dealii::types::global_dof_index> &interface,
-                           Ordering ordering = Ordering::nested_dissection);
+                           Ordering ordering = Ordering::nested_dissection,
+                           double   low_rank_tolerance = 0.);
     ~CondensedFactorization();
     CondensedFactorization(const CondensedFactorization &) = delete;
     CondensedFactorization &
@@ -56,7 +64,7 @@ namespace archdam::time
     /// What the sparse factorization holds and cost.
     struct Statistics
     {
-      double entries    = 0.; ///< entries in the factors (MUMPS's INFOG(29))
+      double entries    = 0.; ///< entries the factors hold (INFOG(29); low rank: INFOG(35))
       double operations = 0.; ///< floating-point operations of the elimination (RINFOG(3))
       double memory     = 0.; ///< bytes used by the factorization, all processes (INFOG(22))
     };
