@@ -1,6 +1,8 @@
 #include <archdam/base/binary_io.h>
+#include <archdam/base/petsc_check.h>
 #include <archdam/analysis/energy_balance.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -19,6 +21,122 @@ namespace archdam::analysis
     return scale > 0. ? std::abs(input - sum()) / scale : 0.;
   }
 
+  /**
+   * The prescribed columns' rows at the prescribed DOFs b, R = A_col(b, :)
+   * for M, K (and D), and the water's rows of M's columns at the free
+   * pressures p, W = M_col(p, b). The columns matrices hold every row of the
+   * cells that touch b (with quadratic cells about three times the rows of
+   * b), which the integrator needs; the balance needs only
+   *   (A_col x)_b = R x,  (A_col x_b)_f = (R^T x_b)_f,  q . M_col du_b = q_p . W du_b,
+   * the second because the solid blocks of M, D and K are symmetric.
+   */
+  struct EnergyBalance::BoundaryRows
+  {
+    IS  b = nullptr, pressures = nullptr;
+    Mat mass = nullptr, stiffness = nullptr, damping = nullptr, water = nullptr;
+    Vec at_b = nullptr, at_p = nullptr;
+
+    /// @p free_pressures: the locally owned ones, empty without water.
+    BoundaryRows(const time::PrescribedDofs &prescribed, const IndexSet &owned,
+                 const IndexSet &free_pressures, const bool general, MPI_Comm comm)
+    {
+      const auto index_set = [&](const auto &dofs, IS &is) {
+        std::vector<PetscInt> mine;
+        for (const auto i : dofs)
+          if (owned.is_element(i))
+            mine.push_back(static_cast<PetscInt>(i));
+        std::sort(mine.begin(), mine.end());
+        petsc_check(ISCreateGeneral(comm, static_cast<PetscInt>(mine.size()), mine.data(),
+                                    PETSC_COPY_VALUES, &is));
+      };
+      index_set(prescribed.dofs, b);
+      IS columns;
+      petsc_check(ISCreateStride(comm, static_cast<PetscInt>(owned.n_elements()),
+                                 static_cast<PetscInt>(owned.nth_index_in_set(0)), 1, &columns));
+      const auto rows_of = [&](const SparseMatrix &A, Mat &R) {
+        petsc_check(MatCreateSubMatrix(static_cast<Mat>(A), b, columns, MAT_INITIAL_MATRIX, &R));
+      };
+      rows_of(prescribed.mass_columns, mass);
+      rows_of(prescribed.stiffness_columns, stiffness);
+      if (general)
+        {
+          AssertThrow(prescribed.damping_columns.m() == prescribed.mass_columns.m(),
+                      ExcMessage("The energy balance with a general damping matrix and "
+                                 "prescribed DOFs needs that matrix's columns."));
+          rows_of(prescribed.damping_columns, damping);
+        }
+      petsc_check(ISDestroy(&columns));
+      petsc_check(MatCreateVecs(mass, nullptr, &at_b));
+      if (Utilities::MPI::max(free_pressures.n_elements(), comm) > 0)
+        {
+          index_set(free_pressures, pressures);
+          petsc_check(MatCreateSubMatrix(static_cast<Mat>(prescribed.mass_columns), pressures, b,
+                                         MAT_INITIAL_MATRIX, &water));
+          petsc_check(MatCreateVecs(water, nullptr, &at_p));
+        }
+    }
+
+    ~BoundaryRows()
+    {
+      for (Mat *A : {&mass, &stiffness, &damping, &water})
+        if (*A != nullptr)
+          MatDestroy(A);
+      for (Vec *v : {&at_b, &at_p})
+        if (*v != nullptr)
+          VecDestroy(v);
+      for (IS *is : {&b, &pressures})
+        if (*is != nullptr)
+          ISDestroy(is);
+    }
+
+    Mat
+    of(const Operator which) const
+    {
+      return which == Operator::mass ? mass : which == Operator::stiffness ? stiffness : damping;
+    }
+
+    /// out_b += (R x)_b; out's other entries unchanged.
+    void
+    add_rows_times(const Mat R, const Vector &x, Vector &out) const
+    {
+      petsc_check(MatMult(R, static_cast<const Vec &>(x), at_b));
+      Vec out_b;
+      petsc_check(VecGetSubVector(static_cast<const Vec &>(out), b, &out_b));
+      petsc_check(VecAXPY(out_b, 1., at_b));
+      petsc_check(VecRestoreSubVector(static_cast<const Vec &>(out), b, &out_b));
+    }
+
+    /// out = R^T x_b (every entry).
+    void
+    transpose_times(const Mat R, const Vector &x, Vector &out) const
+    {
+      Vec x_b;
+      Vec x_all = static_cast<const Vec &>(x);
+      petsc_check(VecGetSubVector(x_all, b, &x_b));
+      petsc_check(MatMultTranspose(R, x_b, static_cast<const Vec &>(out)));
+      petsc_check(VecRestoreSubVector(x_all, b, &x_b));
+    }
+
+    /// q . M_col du for du zero off b.
+    double
+    water_work(const Vector &q, const Vector &du) const
+    {
+      if (water == nullptr)
+        return 0.;
+      Vec du_all = static_cast<const Vec &>(du), q_all = static_cast<const Vec &>(q), du_b, q_p;
+      petsc_check(VecGetSubVector(du_all, b, &du_b));
+      petsc_check(MatMult(water, du_b, at_p));
+      petsc_check(VecRestoreSubVector(du_all, b, &du_b));
+      PetscScalar work;
+      petsc_check(VecGetSubVector(q_all, pressures, &q_p));
+      petsc_check(VecDot(at_p, q_p, &work));
+      petsc_check(VecRestoreSubVector(q_all, pressures, &q_p));
+      return work;
+    }
+  };
+
+  EnergyBalance::~EnergyBalance() = default;
+
   EnergyBalance::EnergyBalance(const Model &model)
     : m(model)
     , has_water(model.fluid != nullptr)
@@ -28,7 +146,7 @@ namespace archdam::analysis
     for (Vector *v : {&free_mask, &kept_mask, &pressure_mask, &solid_mask, &prescribed_mask, &u_static,
                       &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
-                      &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch, &product,
+                      &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch,
                       &a_prev, &inertia_prev, &mean, &jump, &solid_part})
       m.space->reinit(*v);
     if (has_water)
@@ -55,6 +173,11 @@ namespace archdam::analysis
     m.space->constraints.set_zero(free_mask);
     kept_mask = free_mask;
     kept_mask += prescribed_mask;
+    if (m.prescribed)
+      rows = std::make_unique<BoundaryRows>(
+        *m.prescribed, free_mask.locally_owned_elements(),
+        has_water ? physics::reservoir::free_pressure_dofs(*m.space) : IndexSet(),
+        m.damping != nullptr, free_mask.get_mpi_communicator());
   }
 
   void
@@ -67,13 +190,15 @@ namespace archdam::analysis
   }
 
   void
-  EnergyBalance::full_product(const SparseMatrix &A, const SparseMatrix *A_columns,
-                              const Vector &x, Vector &out) const
+  EnergyBalance::full_product(const SparseMatrix &A, const Operator which, const Vector &x,
+                              Vector &out) const
   {
     // A x for the full (unconstrained) solid operator, x from free_part():
     // the condensed A on the free entries, and with a prescribed boundary b
-    // its columns (time::PrescribedDofs, all rows of the cells touching b):
-    //   (A x)_f = A_cond x_f + (A_col x_b)_f,   (A x)_b = (A_col x)_b.
+    // its columns (time::PrescribedDofs, all rows of the cells touching b),
+    // of which the rows at b suffice (BoundaryRows):
+    //   (A x)_f = A_cond x_f + (A_col x_b)_f = A_cond x_f + (R^T x_b)_f,
+    //   (A x)_b = (A_col x)_b = R x.
     // The water's rows (Phi S in the coupled columns) are left out, and so
     // are its columns (the coupled K's -(1/rho_w) S^T: the pressure's work
     // on the dam is counted in the water's balance).
@@ -86,16 +211,13 @@ namespace archdam::analysis
       }
     A.vmult(out, *solid);
     out.scale(free_mask);
-    if (A_columns)
+    if (rows)
       {
-        A_columns->vmult(scratch, *solid);
-        scratch.scale(prescribed_mask);
+        const Mat R = rows->of(which);
+        rows->transpose_times(R, *solid, scratch);
+        scratch.scale(free_mask);
         out += scratch;
-        scratch = *solid;
-        scratch.scale(prescribed_mask);
-        A_columns->vmult(product, scratch);
-        product.scale(free_mask);
-        out += product;
+        rows->add_rows_times(R, *solid, out); // out is 0 at b (constrained)
       }
     if (has_water)
       out.scale(solid_mask);
@@ -108,14 +230,14 @@ namespace archdam::analysis
     // the solid's block of D_c, the water's radiation being counted apart.
     if (m.damping)
       {
-        full_product(*m.damping, damping_columns(), v, out);
+        full_product(*m.damping, Operator::damping, v, out);
         return;
       }
-    full_product(*m.mass, mass_columns(), v, out);
+    full_product(*m.mass, Operator::mass, v, out);
     out *= m.rayleigh.first;
     if (m.rayleigh.second != 0.)
       {
-        full_product(*m.stiffness, stiffness_columns(), v, tmp2);
+        full_product(*m.stiffness, Operator::stiffness, v, tmp2);
         out.add(m.rayleigh.second, tmp2);
       }
   }
@@ -128,21 +250,19 @@ namespace archdam::analysis
     // is counted with the water's balance below). D is alpha M + beta K, or
     // a general damping matrix with its own columns.
     const auto [alpha, beta] = m.damping ? std::pair<double, double>{0., 0.} : m.rayleigh;
+    out = 0.;
     free_part(s.a, work);
     free_part(s.v, tmp2);
     work.add(alpha, tmp2);
-    m.prescribed->mass_columns.vmult(out, work);
+    rows->add_rows_times(rows->mass, work, out);
     free_part(s.u, work);
     work.add(beta, tmp2);
-    m.prescribed->stiffness_columns.vmult(tmp2, work);
-    out += tmp2;
+    rows->add_rows_times(rows->stiffness, work, out);
     if (m.damping)
       {
         free_part(s.v, work);
-        m.prescribed->damping_columns.vmult(tmp2, work);
-        out += tmp2;
+        rows->add_rows_times(rows->damping, work, out);
       }
-    out.scale(prescribed_mask);
   }
 
   void
@@ -155,7 +275,7 @@ namespace archdam::analysis
     if (dissipative())
       {
         free_part(s.a, a_prev);
-        full_product(*m.mass, mass_columns(), a_prev, inertia_prev);
+        full_product(*m.mass, Operator::mass, a_prev, inertia_prev);
       }
     p_prev  = 0.;
     impulse = 0.;
@@ -289,8 +409,7 @@ namespace archdam::analysis
             du = tmp;
             du -= ub_prev;
             ub_prev = tmp;
-            m.prescribed->mass_columns.vmult(work, du);
-            sums.input += 0.5 / (b2 * dt * dt) * (tmp2 * work);
+            sums.input += 0.5 / (b2 * dt * dt) * rows->water_work(tmp2, du);
           }
       }
 
@@ -325,7 +444,7 @@ namespace archdam::analysis
     // one product M a_{n+1} a step, M a_n kept from the step before.
     const double b1 = m.newmark.beta1, b2 = m.newmark.beta2;
     free_part(s.a, mean);
-    full_product(*m.mass, mass_columns(), mean, jump); // M a_{n+1}
+    full_product(*m.mass, Operator::mass, mean, jump); // M a_{n+1}
     mean += a_prev;
     mean *= 0.5;                                         // <a>
     a_prev.sadd(-1., 2., mean);                          // a_{n+1}
@@ -344,10 +463,10 @@ namespace archdam::analysis
   {
     EnergyTerms e = sums;
     Vector      w(u_prev), Ax(u_prev);
-    full_product(*m.mass, mass_columns(), v_prev, Ax);
+    full_product(*m.mass, Operator::mass, v_prev, Ax);
     e.kinetic = 0.5 * (Ax * v_prev);
     w -= u_static;
-    full_product(*m.stiffness, stiffness_columns(), w, Ax);
+    full_product(*m.stiffness, Operator::stiffness, w, Ax);
     e.strain = 0.5 * (Ax * w);
     for (unsigned int k = 0; k < f_static.size(); ++k)
       e.strain -= f_static[k] * (w_prev[k] - w_static[k]);

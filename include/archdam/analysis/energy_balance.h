@@ -11,6 +11,7 @@
 
 #include <array>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -92,8 +93,10 @@ namespace archdam::analysis
    * columns), and the input is the work of the reactions there: input minus
    * radiated, which the MTF does not separate.
    * Cost per step: D v (damping, one product with the coupled system's D,
-   * else M v and K v; with a prescribed boundary also its columns), H p
-   * (water), the boundary reactions, and vector operations.
+   * else M v and K v), H p (water), and vector operations; with a
+   * prescribed boundary, products with the rows of the prescribed columns
+   * at the prescribed DOFs only (BoundaryRows): the reactions, the
+   * boundary's part of D v, and the water's rows at those columns.
    */
   class EnergyBalance : public output::Recorder
   {
@@ -126,6 +129,10 @@ namespace archdam::analysis
     };
 
     explicit EnergyBalance(const Model &model);
+    ~EnergyBalance() override;
+    EnergyBalance(const EnergyBalance &) = delete;
+    EnergyBalance &
+    operator=(const EnergyBalance &) = delete;
 
     /// Start from the state @p s (the static state, at rest) and the joint
     /// forces of @p joints (if any).
@@ -176,12 +183,18 @@ namespace archdam::analysis
     /// as the full ones on the constrained field), its prescribed entries kept.
     void
     free_part(const Vector &x, Vector &out) const;
+    /// Which of the model's operators.
+    enum class Operator
+    {
+      mass,
+      stiffness,
+      damping
+    };
     /// The full solid operator (condensed @p A plus its prescribed
-    /// @p A_columns, if any) times the solid part of x from free_part();
+    /// columns, if any) times the solid part of x from free_part();
     /// solid rows only.
     void
-    full_product(const SparseMatrix &A, const SparseMatrix *A_columns, const Vector &x,
-                 Vector &out) const;
+    full_product(const SparseMatrix &A, Operator which, const Vector &x, Vector &out) const;
     /// D v = alpha M v + beta K v (full operators; Model::damping if given).
     void
     damping_force(const Vector &v, Vector &out) const;
@@ -199,23 +212,12 @@ namespace archdam::analysis
     {
       return m.newmark.beta1 != 0.5 || m.newmark.beta2 != 0.25;
     }
-    const SparseMatrix *
-    mass_columns() const
-    {
-      return m.prescribed ? &m.prescribed->mass_columns : nullptr;
-    }
-    const SparseMatrix *
-    stiffness_columns() const
-    {
-      return m.prescribed ? &m.prescribed->stiffness_columns : nullptr;
-    }
-    const SparseMatrix *
-    damping_columns() const
-    {
-      return m.prescribed ? &m.prescribed->damping_columns : nullptr;
-    }
 
     const Model m;
+    /// The prescribed columns' rows at the prescribed DOFs (null without a
+    /// prescribed boundary).
+    struct BoundaryRows;
+    std::unique_ptr<BoundaryRows> rows;
     const bool  has_water;
     /// 1 at the unconstrained DOFs; at those and the prescribed ones; at the
     /// free pressure DOFs; everywhere else; at the prescribed DOFs.
@@ -234,6 +236,6 @@ namespace archdam::analysis
     double                 t_prev = 0.;
 
     EnergyTerms sums; ///< the path integrals (input, damping, radiated, contact, water radiated)
-    mutable Vector scratch, product, tmp2, solid_part;
+    mutable Vector scratch, tmp2, solid_part;
   };
 } // namespace archdam::analysis
