@@ -189,10 +189,10 @@ namespace archdam::joints
     const unsigned int m = dim * pairs.size();
     if (m == 0)
       return;
-    // (h C)(row, j); C is stored by columns.
+    // (h C)(row, j), from C by rows.
     const double hc          = contact_h();
     const auto   flexibility = [&](const unsigned int j, const unsigned int row) {
-      return hc * C[static_cast<std::size_t>(j) * m + row];
+      return hc * C_rows[static_cast<std::size_t>(row) * m + j];
     };
     // Row dim i + k of the system (into @p row, unless null) and its
     // right-hand side, from the pair's current state. Only the rows that
@@ -526,6 +526,10 @@ namespace archdam::joints
         build_time =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         augmentation = augmentation_of(C, contact_h());
+        C_rows.resize(C.size());
+        for (unsigned int j = 0; j < m; ++j)
+          for (unsigned int i = 0; i < m; ++i)
+            C_rows[static_cast<std::size_t>(i) * m + j] = C[static_cast<std::size_t>(j) * m + i];
       }
 
     const auto *condensed = A_factor.condensed();

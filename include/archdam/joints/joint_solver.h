@@ -320,6 +320,10 @@ namespace archdam::joints
 
     const time::FactorizedOperator &A_factor;
     std::vector<double>             C;
+    /// C by rows (its transpose by columns): the fixed-state system's rows
+    /// are rows of C, read contiguously from here (by columns of C they
+    /// would touch a cache line per entry); the same values as C.
+    std::vector<double> C_rows;
     dealii::LAPACKFullMatrix<double> G;
     /// B on the interface: for every pair unknown its (interface index, value).
     std::vector<std::vector<std::pair<unsigned int, double>>> B_interface;
