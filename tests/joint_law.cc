@@ -36,8 +36,10 @@
 //     delta_s = 1 mm, residual values 0): the block is pulled open by
 //     1.2 sigma_t A for a few steps and pushed back shut; kappa, the largest
 //     opening of each pair, is taken from the gaps the test records every
-//     step. Pulled again by a slow ramp (0.5 % of sigma_t A a step), the
-//     joint opens at F = sigma_t (1 - kappa / delta_s) A; in a second run,
+//     step. Pulled again by a slow ramp (0.5 % of sigma_t A a step), no
+//     closed pair carries more than its residual strength
+//     sigma_t (1 - kappa_i / delta_s) A_i, and the first pair opens when
+//     its force reaches it (within 2 %: one ramp step); in a second run,
 //     shut under its weight W, a slow horizontal ramp starts the slip at
 //     H = c (1 - kappa / delta_s) A + mu W (tolerance 2 %: one ramp step
 //     and the block's vibration). With Law = Mohr-Coulomb the same history
@@ -307,19 +309,46 @@ main(int argc, char **argv)
             << " (0.2 to 0.8 mm)" << std::endl;
         const double step_load = 0.005 * sigma_t * A;
         double       F_open    = -1.;
+        // Each pair's tensile force against its own residual strength
+        // sigma_t (1 - kappa_i / delta_s) A_i while every pair is closed:
+        // the largest of the step before the first pair opens. (The joint's
+        // total at which all have opened is not the reference: the pairs'
+        // normal forces differ by up to 7 % after the frictional push, by a
+        // path that round-off decides, and they unzip from the most loaded.)
+        double largest_ratio = 0., ratio_before_opening = -1., worst_excess = 0.;
         for (unsigned int k = 1; k <= 240 && F_open < 0.; ++k)
           {
             r.step(k * step_load);
+            bool   one_open = false;
+            double largest  = 0.;
+            for (unsigned int i = 0; i < r.m.pairs->size(); ++i)
+              {
+                one_open = one_open || r.solver->state[i] == joints::PairState::separation;
+                const double strength_i = sigma_t *
+                                          (1. - r.kappa[i] / jp.law.softening_opening) *
+                                          (*r.m.pairs)[i].area;
+                largest = std::max(largest, r.solver->force[dim * i] / strength_i);
+              }
+            if (one_open && ratio_before_opening < 0.)
+              ratio_before_opening = largest_ratio;
+            if (!one_open)
+              {
+                largest_ratio = largest;
+                worst_excess  = std::max(worst_excess, largest - 1.);
+              }
             if (r.all(joints::PairState::separation))
               F_open = k * step_load;
           }
-        const double expected = sigma_t * A * strength_left(r);
         if (softening)
-          // Without the value: the ramp's step (0.5 % of sigma_t A) puts the
-          // reference between two load levels, so round-off decides which one.
-          testing::check_below("  load when the joint opens again, relative error against "
-                               "sigma_t (1 - kappa / delta_s) A,",
-                               std::abs(F_open - expected) / expected, 0.02);
+          {
+            testing::check_below("  a closed pair's tensile force above its residual strength "
+                                 "sigma_t (1 - kappa_i / delta_s) A_i, relative,",
+                                 std::max(0., worst_excess), 1e-9);
+            // the ramp adds under 1 % of a pair's strength per step
+            testing::check_below("  the most loaded pair's force in the step before the first "
+                                 "opens, relative error against that strength,",
+                                 std::abs(1. - ratio_before_opening), 0.02);
+          }
         else
           log << "  opens at once (residual tensile strength 0), F = " << F_open << " N: "
               << (F_open <= 0.02 * sigma_t * A ? "yes" : "NO") << " (at most 0.02 sigma_t A)"
