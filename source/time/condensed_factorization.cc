@@ -116,9 +116,9 @@ namespace archdam::time
 
     // The ordering: with a Schur complement MUMPS orders by AMD alone, which
     // on these meshes gives 3-4 times the operations of PORD. So the whole
-    // matrix is ordered first, by METIS's or SCOTCH's nested dissection
-    // (computed here: Debian's MUMPS has neither) or by PORD, and the order
-    // with the interface moved last is given to MUMPS.
+    // matrix is ordered first, by METIS's or SCOTCH's nested dissection of
+    // the node graph (computed here: Debian's MUMPS has no METIS) or by
+    // PORD, and the order with the interface moved last is given to MUMPS.
     std::vector<MUMPS_INT> by_position; // 1-based unknowns in elimination order
     if (ordering == Ordering::pord)
       {
