@@ -116,20 +116,27 @@ namespace archdam::output
           peak_opening[i] = joints.gap(i);
           peak_time[i]    = time;
         }
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      if (-joints.gap(i) > deepest)
+        {
+          deepest      = -joints.gap(i);
+          deepest_pair = i;
+          deepest_time = time;
+        }
   }
 
   void
   JointOutput::save(std::ostream &out) const
   {
     HistoryRecorder::save(out);
-    binary::write_all(out, peak_opening, peak_time, pvd_records);
+    binary::write_all(out, peak_opening, peak_time, pvd_records, deepest, deepest_time, deepest_pair);
   }
 
   void
   JointOutput::load(std::istream &in)
   {
     HistoryRecorder::load(in);
-    binary::read_all(in, peak_opening, peak_time, pvd_records);
+    binary::read_all(in, peak_opening, peak_time, pvd_records, deepest, deepest_time, deepest_pair);
     if (peak_opening.size() != pairs.size())
       throw InputError("Checkpoint: the saved joint state has " +
                        std::to_string(peak_opening.size()) + " node pairs, the model " +
@@ -237,5 +244,9 @@ namespace archdam::output
             summary.set(key + " " + std::string(1, "xyz"[d]) + " [m]",
                         pairs[peak_of[j]].position[d]);
         }
+    const std::string key = stage + "/joints/largest penetration";
+    summary.set(key + " [m]", deepest);
+    summary.set(key + " joint", deepest > 0. ? pairs[deepest_pair].joint : 0.);
+    summary.set(key + " time [s]", deepest_time);
   }
 } // namespace archdam::output

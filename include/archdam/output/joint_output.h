@@ -22,7 +22,9 @@ namespace archdam::output
    *  - joint_envelopes_<stage>.csv: for each joint and height z the largest
    *    opening over time; joint_crest_<stage>.csv: for each joint the largest
    *    opening at its crest (its highest pairs), where and when;
-   *  - in the summary, the peak opening of each joint with time and place.
+   *  - in the summary, the peak opening of each joint with time and place,
+   *    and the largest penetration of a closed pair (the closure error of the
+   *    step impulse, doc/theory/joints.md §10) with its joint and time.
    */
   class JointOutput : public HistoryRecorder
   {
@@ -55,6 +57,13 @@ namespace archdam::output
     void
     load(std::istream &in) override;
 
+    /// The largest penetration (-gap) of any pair recorded so far [m], 0 if none.
+    double
+    largest_penetration() const
+    {
+      return deepest;
+    }
+
   private:
     /// One row of histories and the running envelopes at @p time.
     void
@@ -69,6 +78,9 @@ namespace archdam::output
     const unsigned int               field_interval;
     std::vector<unsigned int>        monitored;
     std::vector<double>              peak_opening, peak_time;
+    /// The largest penetration (-gap) of any pair so far, its pair and time.
+    double                           deepest = 0., deepest_time = 0.;
+    unsigned int                     deepest_pair = 0;
     std::vector<std::pair<double, std::string>> pvd_records;
   };
 } // namespace archdam::output
