@@ -128,7 +128,7 @@ end
   inline std::string
   el_centro_file(const std::string &component)
   {
-    return SOURCE_DIR "/../../shared/data/ground_motions/RSN6_IMPVALL.I_I-ELC" + component +
+    return SOURCE_DIR "/../data/ground_motions/RSN6_IMPVALL.I_I-ELC" + component +
            ".AT2";
   }
 

@@ -1,6 +1,6 @@
 // The ground-motion readers and GroundMotion, checked against references that
 // do not come from the code under test:
-//  1. every PEER .AT2 record in shared/data/ground_motions: NPTS and DT against
+//  1. every PEER .AT2 record in data/ground_motions: NPTS and DT against
 //     a regular expression on the 4th header line, every sample and the PGA
 //     against a plain scan of all numbers after the header;
 //  2. a record with the older "n dt NPTS, DT" header and Windows line ends;
@@ -39,7 +39,7 @@ namespace
   /// Standard gravity, the unit of .AT2 files.
   constexpr double g = 9.80665;
 
-  const std::string data_directory = SOURCE_DIR "/../../shared/data";
+  const std::string data_directory = SOURCE_DIR "/../data";
 
   void
   report(const std::string &what, const bool ok)
@@ -128,7 +128,7 @@ namespace
   void
   check_peer_records()
   {
-    std::cout << "PEER records in shared/data/ground_motions" << std::endl;
+    std::cout << "PEER records in data/ground_motions" << std::endl;
     std::vector<std::string> names;
     for (const auto &entry : std::filesystem::directory_iterator(
            data_directory + "/ground_motions"))

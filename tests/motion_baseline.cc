@@ -42,7 +42,7 @@ using archdam::testing::Ends;
 
 namespace
 {
-  const std::string data = SOURCE_DIR "/../../shared/data/ground_motions/";
+  const std::string data = SOURCE_DIR "/../data/ground_motions/";
   const double      g    = 9.80665;
 
   /// @p x in cm with one decimal, without "-0.0" for round-off values.
