@@ -105,7 +105,7 @@ end
 subsection Foundation
   set Model = massed
   set MTF order = 2
-  set Stabilization = 0
+  set Stabilization rate = 0
 end
 subsection Damping
   set Damping ratio = 0

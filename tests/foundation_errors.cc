@@ -1,6 +1,7 @@
 // Bad foundation input ends with a message naming the problem (InputError):
 // - the MTF needs interior points j c_a dt inside the rock (doc/theory/foundation.md §5),
 //   a time step too long for the rock's depth is reported;
+// - the MTF's stabilization rate times the step (gamma per step) above 0.5;
 // - the viscous boundary without springs cannot carry the static stage;
 // - and what must be accepted: a dam flush with the rock's side boundary,
 //   whose MTF points run along the rock's top face under the dam.
@@ -91,6 +92,8 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // rock c_p = 3156 m/s: 2 c_p dt = 63 m, the rock is 10 m deep below the dam
   expect_error("MTF with a time step too long for the rock", "  set Transmitting boundary = MTF");
+  expect_error("MTF stabilization above 0.5 per step",
+               "  set Transmitting boundary = MTF\n  set Stabilization rate = 60");
   expect_error("viscous boundary without springs, static stage",
                "  set Transmitting boundary = viscous");
   // 2 c_p dt = 3.2 m, within the 10 m of rock below the dam; the dam's end

@@ -4,7 +4,8 @@
 // frequencies kept down by c_a dt / h <= 1).
 //
 // A 30 x 30 x 30 m rock box (2 x 2 x 2 Q2 cells, nodes 7.5 m apart, free top,
-// MTF of order 2 on the bottom and the four sides, default c_a and gamma),
+// MTF of order 2 on the bottom and the four sides, default c_a and
+// stabilization rate: gamma = 2 /s x 2 ms = 0.004),
 // dt = 2 ms (c_p dt / h = 0.46), no damping, no numerical dissipation (average
 // acceleration): nothing but the boundary removes energy, so any instability
 // of the boundary shows as growth.

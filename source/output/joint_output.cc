@@ -111,18 +111,20 @@ namespace archdam::output
       }
     table.append(row);
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (joints.gap(i) > peak_opening[i])
-        {
-          peak_opening[i] = joints.gap(i);
-          peak_time[i]    = time;
-        }
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (-joints.gap(i) > deepest)
-        {
-          deepest      = -joints.gap(i);
-          deepest_pair = i;
-          deepest_time = time;
-        }
+      {
+        const double gap = joints.gap(i);
+        if (gap > peak_opening[i])
+          {
+            peak_opening[i] = gap;
+            peak_time[i]    = time;
+          }
+        if (-gap > deepest)
+          {
+            deepest      = -gap;
+            deepest_pair = i;
+            deepest_time = time;
+          }
+      }
   }
 
   void

@@ -32,10 +32,14 @@ namespace archdam::physics::foundation
                       "the rock's P-wave speed for the component normal to the "
                       "boundary and its S-wave speed for the tangential ones.",
                       Patterns::Double(0.));
-    prm.add_parameter("Stabilization", stabilization,
-                      "Drift stabilization gamma of the MTF: the j-th term is "
-                      "multiplied by (1 + gamma)^(-j) (0.01 - 0.05 usual).",
-                      Patterns::Double(0., 0.5));
+    prm.add_parameter("Stabilization rate", stabilization_rate,
+                      "Drift stabilization of the MTF as a rate [1/s]: with "
+                      "gamma = rate * time step, the j-th term is multiplied "
+                      "by (1 + gamma)^(-j). A rate, so that the boundary's "
+                      "artificial decay does not change with the time step; "
+                      "2 /s is gamma = 0.01 at dt = 5 ms (gamma 0.01 - 0.05 "
+                      "per step usual).",
+                      Patterns::Double(0.));
     prm.add_parameter("Spring distance", spring_distance,
                       "Distance R [m] from the scattering source to the viscous "
                       "boundary; springs G/R (normal) and G/(2R) (tangential) "

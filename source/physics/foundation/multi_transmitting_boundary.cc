@@ -38,9 +38,21 @@ namespace archdam::physics::foundation
     , free_field(free_field)
     , comm(space.comm)
   {
+    // The drift stabilization per step, gamma = rate dt: a fixed gamma would
+    // decay faster per second at a smaller step (doc/theory/foundation.md §6).
+    const double gamma = p.stabilization_rate * dt;
+    if (order > 0 && gamma > 0.5)
+      {
+        std::ostringstream msg;
+        msg << "Foundation: Stabilization rate = " << p.stabilization_rate
+            << " /s at the time step " << dt << " s gives gamma = " << gamma
+            << " per step, above 0.5: the MTF would damp rather than transmit. "
+            << "Use a rate below " << 0.5 / dt << " /s (0.01 - 0.05 per step is usual).";
+        throw InputError(msg.str());
+      }
     for (unsigned int j = 1; j <= order; ++j)
       coefficient.push_back((j % 2 == 1 ? 1. : -1.) * binomial(order, j) *
-                            std::pow(1. + p.stabilization, -double(j)));
+                            std::pow(1. + gamma, -double(j)));
 
     const auto &rock = materials.rock;
     const double c_s = shear_wave_speed(rock), c_p = pressure_wave_speed(rock);

@@ -70,8 +70,11 @@ namespace archdam::physics::foundation
     /// c_a in m/s; 0 = the rock's wave speed of each component (P for the
     /// component normal to the boundary, S for the tangential ones).
     double artificial_speed = 0.;
-    /// gamma of the stabilized MTF, each j-th term times (1 + gamma)^(-j).
-    double stabilization = 0.01;
+    /// Drift stabilization of the MTF as a rate [1/s]: with gamma = rate dt
+    /// each j-th term is multiplied by (1 + gamma)^(-j), an artificial decay
+    /// of about `rate` per second whatever the step (doc/theory/foundation.md
+    /// §6).
+    double stabilization_rate = 2.;
     /// R of the viscous-spring boundary in m; 0 = dashpots only.
     double spring_distance = 0.;
 
