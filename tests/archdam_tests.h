@@ -22,6 +22,9 @@
 
 namespace archdam::testing
 {
+  /// The recorded motions shipped with the repository.
+  inline const std::string ground_motions = SOURCE_DIR "/../data/ground_motions/";
+
   /// Only rank 0 prints; the others write to a sink.
   inline std::ostream &
   log()

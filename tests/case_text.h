@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "archdam_tests.h"
 #include "gmsh_example.h"
 
 namespace archdam::testing::case_text
@@ -128,8 +129,7 @@ end
   inline std::string
   el_centro_file(const std::string &component)
   {
-    return SOURCE_DIR "/../data/ground_motions/RSN6_IMPVALL.I_I-ELC" + component +
-           ".AT2";
+    return ground_motions + "RSN6_IMPVALL.I_I-ELC" + component + ".AT2";
   }
 
   /// El Centro (180) in the stream direction x; @p lines ("set ...") add to

@@ -36,95 +36,103 @@
 using namespace dealii;
 using namespace archdam;
 
-namespace {
-const double end_time = 2.;
+namespace
+{
+  const double end_time = 2.;
 
-/// Crest minus base (stream) at every step of a run at @p dt, with
-/// @p foundation the lines of the Foundation section.
-std::vector<double> crown_history(const double dt,
-                                  const std::string &foundation) {
-  static unsigned int run = 0;
-  const Parameters p = parameters_from_string(
+  /// Crest minus base (stream) at every step of a run at @p dt, with
+  /// @p foundation the lines of the Foundation section.
+  std::vector<double>
+  crown_history(const double dt, const std::string &foundation)
+  {
+    static unsigned int run = 0;
+    const Parameters    p   = parameters_from_string(
       testing::arch_dam_case("massed", "results_" + std::to_string(run++),
-                             testing::Reservoir::empty_and_glued_joints,
-                             end_time) +
-      testing::case_text::time_integration(dt, end_time) +
-      "\nsubsection Foundation\n" + foundation + "end\n");
-  std::ostringstream quiet;
-  analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
-  sim.run();
-  const auto *histories = sim.recorder<archdam::output::MonitorHistories>();
-  const auto crest = testing::column(histories->columns(), "crest.ux [m]");
-  const auto base = testing::column(histories->columns(), "base.ux [m]");
-  std::vector<double> u;
-  for (const auto &row : histories->rows())
-    u.push_back(row[crest] - row[base]);
-  return u;
-}
-
-/// e(5 ms) and e(2.5 ms) against the 1.25 ms run, relative to its peak.
-struct Errors {
-  double coarse = 0., medium = 0.;
-
-  double ratio() const { return coarse / medium; }
-};
-
-/// The errors of the runs with the Foundation section's lines at each step
-/// given by @p foundation_at.
-Errors errors(const std::string &label,
-              const std::function<std::string(double)> &foundation_at) {
-  const std::vector<double> dts = {0.005, 0.0025, 0.00125};
-  std::vector<std::vector<double>> u;
-  for (const double dt : dts)
-    u.push_back(crown_history(dt, foundation_at(dt)));
-  double peak = 0.;
-  for (const double x : u[2])
-    peak = std::max(peak, std::abs(x));
-  // Row k << r of the run at 5 ms / 2^r is at t = k 5 ms (the first row
-  // is the static state).
-  std::vector<double> error(2, 0.);
-  for (unsigned int r = 0; r < 2; ++r) {
-    AssertThrow(u[r].size() == (u[2].size() - 1) / (4 >> r) + 1,
-                ExcInternalError());
-    for (std::size_t k = 0; k < u[0].size(); ++k)
-      error[r] = std::max(error[r], std::abs(u[r][k << r] - u[2][k << 2]));
-    error[r] /= peak;
+                             testing::Reservoir::empty_and_glued_joints, end_time) +
+      testing::case_text::time_integration(dt, end_time) + "\nsubsection Foundation\n" +
+      foundation + "end\n");
+    std::ostringstream   quiet;
+    analysis::Simulation sim(p, MPI_COMM_WORLD, quiet);
+    sim.run();
+    const auto *histories = sim.recorder<archdam::output::MonitorHistories>();
+    const auto  crest     = testing::column(histories->columns(), "crest.ux [m]");
+    const auto  base      = testing::column(histories->columns(), "base.ux [m]");
+    std::vector<double> u;
+    for (const auto &row : histories->rows())
+      u.push_back(row[crest] - row[base]);
+    return u;
   }
-  const Errors e{error[0], error[1]};
-  testing::log() << label << ": peak crest - base " << peak * 1e3
-                 << " mm; max |u_dt - u_1.25ms| / peak " << 100 * e.coarse
-                 << " % (5 ms), " << 100 * e.medium << " % (2.5 ms); ratio "
-                 << e.ratio() << std::endl;
-  return e;
-}
 
-/// The stabilization @p rate [1/s] as Foundation lines.
-std::string stabilization(const double rate) {
-  return "  set Stabilization rate = " + std::to_string(rate) + "\n";
-}
+  /// e(5 ms) and e(2.5 ms) against the 1.25 ms run, relative to its peak.
+  struct Errors
+  {
+    double coarse = 0., medium = 0.;
+
+    double
+    ratio() const
+    {
+      return coarse / medium;
+    }
+  };
+
+  /// The errors of the runs with the Foundation section's lines at each step
+  /// given by @p foundation_at.
+  Errors
+  errors(const std::string &label, const std::function<std::string(double)> &foundation_at)
+  {
+    const std::vector<double>        dts = {0.005, 0.0025, 0.00125};
+    std::vector<std::vector<double>> u;
+    for (const double dt : dts)
+      u.push_back(crown_history(dt, foundation_at(dt)));
+    double peak = 0.;
+    for (const double x : u[2])
+      peak = std::max(peak, std::abs(x));
+    // Row k << r of the run at 5 ms / 2^r is at t = k 5 ms (the first row
+    // is the static state).
+    std::vector<double> error(2, 0.);
+    for (unsigned int r = 0; r < 2; ++r)
+      {
+        AssertThrow(u[r].size() == (u[2].size() - 1) / (4 >> r) + 1, ExcInternalError());
+        for (std::size_t k = 0; k < u[0].size(); ++k)
+          error[r] = std::max(error[r], std::abs(u[r][k << r] - u[2][k << 2]));
+        error[r] /= peak;
+      }
+    const Errors e{error[0], error[1]};
+    testing::log() << label << ": peak crest - base " << peak * 1e3
+                   << " mm; max |u_dt - u_1.25ms| / peak " << 100 * e.coarse << " % (5 ms), "
+                   << 100 * e.medium << " % (2.5 ms); ratio " << e.ratio() << std::endl;
+    return e;
+  }
+
+  /// The stabilization @p rate [1/s] as Foundation lines.
+  std::string
+  stabilization(const double rate)
+  {
+    return "  set Stabilization rate = " + std::to_string(rate) + "\n";
+  }
 } // namespace
 
-int main(int argc, char **argv) {
+int
+main(int argc, char **argv)
+{
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  auto &log = testing::log();
+  auto                            &log = testing::log();
   log << std::setprecision(3);
   const Errors fixed_boundary =
-      errors("1. boundary fixed to the free field (no MTF)",
-             [](double) { return "  set Transmitting boundary = fixed\n"; });
-  const Errors plain = errors("2. MTF without stabilization",
-                              [](double) { return stabilization(0.); });
+    errors("1. boundary fixed to the free field (no MTF)",
+           [](double) { return "  set Transmitting boundary = fixed\n"; });
+  const Errors plain =
+    errors("2. MTF without stabilization", [](double) { return stabilization(0.); });
   const Errors rate = errors("3. MTF, stabilization rate 2 /s (gamma = 2 dt)",
                              [](double) { return stabilization(2.); });
-  const Errors fixed_gamma =
-      errors("4. MTF, gamma 0.05 at every step (rate 0.05 / dt)",
-             [](double dt) { return stabilization(0.05 / dt); });
-  log << "1. second order, ratio above 4.5: "
-      << testing::yes(fixed_boundary.ratio() > 4.5) << std::endl
-      << "2. first order at least, ratio above 2.7: "
-      << testing::yes(plain.ratio() > 2.7) << std::endl
+  const Errors fixed_gamma = errors("4. MTF, gamma 0.05 at every step (rate 0.05 / dt)",
+                                    [](double dt) { return stabilization(0.05 / dt); });
+  log << "1. second order, ratio above 4.5: " << testing::yes(fixed_boundary.ratio() > 4.5)
+      << std::endl
+      << "2. first order at least, ratio above 2.7: " << testing::yes(plain.ratio() > 2.7)
+      << std::endl
       << "3. errors within 20 % of 2.'s at both steps: "
-      << testing::yes(std::abs(rate.coarse - plain.coarse) <
-                          0.2 * plain.coarse &&
+      << testing::yes(std::abs(rate.coarse - plain.coarse) < 0.2 * plain.coarse &&
                       std::abs(rate.medium - plain.medium) < 0.2 * plain.medium)
       << std::endl
       << "4. errors above twice 2.'s at both steps: "

@@ -42,8 +42,8 @@ using archdam::testing::Ends;
 
 namespace
 {
-  const std::string data = SOURCE_DIR "/../data/ground_motions/";
-  const double      g    = 9.80665;
+  const std::string &data = archdam::testing::ground_motions;
+  const double       g    = 9.80665;
 
   /// @p x in cm with one decimal, without "-0.0" for round-off values.
   double

@@ -38,8 +38,8 @@ using archdam::testing::log;
 
 namespace
 {
-  const std::string data = SOURCE_DIR "/../data/ground_motions/";
-  const double      g    = 9.80665;
+  const std::string &data = archdam::testing::ground_motions;
+  const double       g    = 9.80665;
 
   /// Run the command; print what a user sees on errors, return the exit code.
   int

@@ -36,7 +36,7 @@ using archdam::testing::log;
 
 namespace
 {
-  const std::string data = SOURCE_DIR "/../data/ground_motions/";
+  const std::string &data = archdam::testing::ground_motions;
 
   double
   rk4_peak(const AccelerationRecord &r, const double T, const double zeta)
