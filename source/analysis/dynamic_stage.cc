@@ -263,7 +263,10 @@ namespace archdam::analysis
           else
             integrator->advance(load, current, solve);
           if (joint_solver)
-            check_contact_step(contact, n * dt);
+            {
+              check_contact_step(contact, n * dt);
+              joint_solver->correct_position(*integrator, current);
+            }
           if (step_impulse())
             {
               mean_acceleration = current.v;
@@ -375,6 +378,13 @@ namespace archdam::analysis
             summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
             summary.set("dynamic/contact problem/factorizations", mixed->factorizations);
             summary.set("dynamic/contact problem/updated solves", mixed->updated_solves);
+          }
+        if (p.joints.position_correction)
+          {
+            summary.set("dynamic/joints/steps with a position correction",
+                        joint_solver->corrections);
+            summary.set("dynamic/joints/largest position correction [m]",
+                        joint_solver->largest_correction);
           }
       }
     summarize_step_costs(steps_run);

@@ -59,6 +59,20 @@ namespace archdam::joints
                   "step cannot create energy at the joints, and persistent contact "
                   "does not chatter; it needs the mixed solver, and with it use the "
                   "average acceleration rule (Beta1 = 0.5, Beta2 = 0.25).");
+    prm.add_parameter("Position correction", position_correction,
+                      "With Contact in time = step impulse: after every dynamic step, the "
+                      "closed pairs that penetrate or stand apart (the step impulse holds "
+                      "their velocity, not their position: a pair that closes in a step "
+                      "penetrates by up to dt/2 times its approach velocity) are moved "
+                      "back to touching by a correction of the displacements alone, the "
+                      "velocities kept (doc/theory/joints.md §11). It costs one more "
+                      "back-substitution in the steps that correct.");
+    prm.add_parameter("Position tolerance", position_tolerance,
+                      "With Position correction: a step corrects when a closed pair stands "
+                      "apart or penetrates, or an open pair penetrates, by more than this "
+                      "[m]; the correction then brings every such pair to touching (within "
+                      "Gap tolerance).",
+                      Patterns::Double(0.));
     add_selection(prm, "Grouting", grouting, grouting_names(),
                   "When the static stage grouts the joints (doc/theory/loading-sequence.md "
                   "§1): before self-weight = the whole static load on the grouted dam at "

@@ -164,6 +164,17 @@ namespace archdam::joints
   }
 
   void
+  JointSolver::correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s) const
+  {
+    if (correction_force.empty())
+      return;
+    Vector load(s.u);
+    load = 0.;
+    pairs.add_transpose(correction_force, -1., load);
+    newmark.correct_displacement(load, s);
+  }
+
+  void
   JointSolver::set_load()
   {
     for (unsigned int j = 0; j < pair_load.size(); ++j)
@@ -302,6 +313,7 @@ namespace archdam::joints
   {
     ContactStep step;
     newmark.advance(load_next, s, contact_step_solver(newmark, solver, step));
+    solver.correct_position(newmark, s);
     return step;
   }
 

@@ -503,6 +503,67 @@ namespace archdam::joints
       }
   }
 
+  void
+  MixedJointSolver::find_position_correction()
+  {
+    // doc/theory/joints.md §11: when a pair is off touch by more than
+    // Position tolerance, the closed pairs off touch (|gap| above Gap
+    // tolerance) and the open pairs that penetrate (an open pair closes only
+    // in a step it starts touching, §10) take normal forces nu with
+    // h C_PP nu_P = gap_P, which move w by -h C nu (the displacements by
+    // h Kbar^{-1} (-B^T nu)) and bring them to touching; the pairs that this
+    // moves off touch or into penetration join P.
+    const unsigned int m = dim * pairs.size();
+    correction_force.clear();
+    const auto off_touch = [&](const unsigned int i, const double g) {
+      return state[i] == PairState::separation ? -g : std::abs(g);
+    };
+    bool needed = false;
+    for (unsigned int i = 0; i < pairs.size() && !needed; ++i)
+      needed = off_touch(i, gap(i)) > p.position_tolerance;
+    if (!needed)
+      return;
+    std::vector<double>       dw(m, 0.), nu(m, 0.);
+    std::vector<unsigned int> P;
+    std::vector<bool>         in_P(pairs.size(), false);
+    for (unsigned int round = 0; round < pairs.size(); ++round)
+      {
+        bool grown = false;
+        for (unsigned int i = 0; i < pairs.size(); ++i)
+          if (!in_P[i] && off_touch(i, gap(i) + dw[dim * i]) > p.gap_tolerance)
+            {
+              P.push_back(i);
+              in_P[i] = grown = true;
+            }
+        if (!grown)
+          break;
+        const unsigned int          n = P.size();
+        LAPACKFullMatrix<double>    S(n, n);
+        dealii::Vector<double>      gaps(n);
+        for (unsigned int b = 0; b < n; ++b)
+          {
+            const double *column = &C[static_cast<std::size_t>(dim * P[b]) * m];
+            for (unsigned int a = 0; a < n; ++a)
+              S(a, b) = h * column[dim * P[a]];
+            gaps(b) = gap(P[b]);
+          }
+        S.compute_lu_factorization();
+        S.solve(gaps);
+        for (unsigned int a = 0; a < n; ++a)
+          nu[dim * P[a]] = gaps(a);
+        std::fill(dw.begin(), dw.end(), 0.);
+        add_flexibility_times(-h, nu, dw);
+      }
+    if (P.empty())
+      return;
+    for (unsigned int j = 0; j < m; ++j)
+      w[j] += dw[j];
+    ++corrections;
+    for (const unsigned int i : P)
+      largest_correction = std::max(largest_correction, std::abs(dw[dim * i]));
+    correction_force = std::move(nu);
+  }
+
   ContactStep
   MixedJointSolver::solve(const Vector &r, const std::vector<double> &w_base, Vector &x)
   {
@@ -589,6 +650,8 @@ namespace archdam::joints
         projected_gauss_seidel(step);
       }
     set_load();
+    if (p.position_correction && !velocity_target.empty())
+      find_position_correction();
 
     if (condensed)
       {

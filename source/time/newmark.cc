@@ -199,6 +199,16 @@ namespace archdam::time
   }
 
   void
+  NewmarkIntegrator::correct_displacement(const Vector &load, NewmarkState &s)
+  {
+    rhs = load;
+    constraints.set_zero(rhs);
+    effective_operator.solve(tmp, rhs);
+    constraints.distribute(tmp);
+    s.u.add(p.beta2 * dt * dt, tmp);
+  }
+
+  void
   NewmarkIntegrator::advance(const Vector              &load_next,
                              NewmarkState              &s,
                              const PrescribedDofs      &prescribed,

@@ -197,6 +197,13 @@ namespace archdam::joints
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     Law           strength_law = Law::mohr_coulomb;
     ContactInTime contact_in_time = ContactInTime::step_impulse;
+    /// With the step impulse: after each dynamic step, move the closed
+    /// pairs that do not touch back to touching by a correction of the
+    /// displacements alone (doc/theory/joints.md §11).
+    bool position_correction = false;
+    /// A step corrects when a pair is off touch by more than this [m]; it
+    /// then brings every pair to within Gap tolerance.
+    double position_tolerance = 1e-5;
     Grouting      grouting        = Grouting::before_self_weight;
     StaticSolution       static_solution = StaticSolution::one_solve;
     RelaxationParameters relaxation;

@@ -111,6 +111,21 @@ namespace archdam::joints
     void
     prepare_step(const time::NewmarkIntegrator &newmark);
 
+    /**
+     * With Contraction joints/Position correction, after the Newmark step
+     * that solve() made: u_{n+1} += beta2 dt^2 Kbar^{-1} (-B^T nu), the
+     * correction that solve() found to bring every closed pair back to
+     * touching (doc/theory/joints.md §11), v and a kept. Nothing when the
+     * step needed none.
+     */
+    void
+    correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s) const;
+    /// The steps that made a position correction, and the largest change of
+    /// a pair's normal relative displacement one of them made [m] (this
+    /// solver's run; not kept in a checkpoint).
+    unsigned long corrections        = 0;
+    double        largest_correction = 0.;
+
     const NodePairs &pairs;
     /// Pair values, 3 per pair in the local frame (xi, eta, zeta): the
     /// forces the law holds (what the joints carry), the forces the model is
@@ -175,6 +190,10 @@ namespace archdam::joints
     /// pair_load = omega force - (omega - 1) load_committed.
     void
     set_load();
+
+    /// The position correction's pair forces nu (3 per pair, normal only;
+    /// empty when the last step needed none).
+    std::vector<double> correction_force;
 
     /// Pair i's strength from the joint law at its history.
     PairStrength
@@ -312,6 +331,14 @@ namespace archdam::joints
     void
     projected_gauss_seidel(ContactStep &step);
 
+    /// The position correction of the step just solved (doc/theory/joints.md
+    /// §11): the normal forces nu that bring the closed pairs off touch
+    /// and the open pairs that penetrate to touching, h C_PP nu_P = gap_P
+    /// on the set P of those pairs (grown while the correction moves
+    /// others off touch or into penetration), w moved by -h C nu.
+    void
+    find_position_correction();
+
     /// With A factorized condensed on the pairs' DOFs (Contraction
     /// joints/Mixed method solves): G = S^{-1} B^T on the interface and
     /// C = B G from its Schur complement S, the interface's B.
@@ -421,7 +448,8 @@ namespace archdam::joints
   contact_step_solver(const time::NewmarkIntegrator &newmark, JointSolver &solver,
                       ContactStep &step);
 
-  /// One Newmark step with joint forces: advance() with contact_step_solver().
+  /// One Newmark step with joint forces: advance() with contact_step_solver(),
+  /// then the solver's position correction, if any.
   ContactStep
   advance_with_contact(time::NewmarkIntegrator &newmark, JointSolver &solver,
                        const Vector &load_next, time::NewmarkState &s);

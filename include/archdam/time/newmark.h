@@ -141,6 +141,16 @@ namespace archdam::time
             const std::vector<double> &u_next,
             const StepSolver          &solve = {});
 
+    /**
+     * Move the displacements of the step just advanced by the response of
+     * the effective matrix to @p load, u_{n+1} += beta2 dt^2 Kbar^{-1} load,
+     * leaving v and a as they are: a correction of the positions alone (the
+     * joints' position correction, doc/theory/joints.md §11). One
+     * back-substitution; constrained DOFs take no part.
+     */
+    void
+    correct_displacement(const Vector &load, NewmarkState &s);
+
     double
     time_step() const
     {
