@@ -2,9 +2,9 @@
 
 Reads results/convergence/<mesh>/<run>/, writes the tables to
 convergence_tables.txt there (and the screen) and the figures
-convergence_{static,relaxed,modal,dynamic,relaxed_dynamic}.png there or into
---figures; the earthquake peaks of the dynamic_relaxed runs are prefixed
-"relaxed: ".
+convergence_{static,relaxed,modal,dynamic,relaxed_dynamic,rock_beta_dynamic}.png
+there or into --figures; the earthquake peaks of the dynamic_relaxed runs are
+prefixed "relaxed: ", those of the dynamic_rock_beta runs "rock beta: ".
 """
 import csv
 import json
@@ -205,6 +205,7 @@ def collect(results, mesh, window):
     # relaxed one (dynamic_relaxed)
     peaks("dynamic", "")
     peaks("dynamic_relaxed", "relaxed: ")
+    peaks("dynamic_rock_beta", "rock beta: ")
     for run, label in [("modal_massed", "massed rock"), ("modal_massless", "massless rock")]:
         d = os.path.join(results, mesh, run)
         s = summary(d)
@@ -247,7 +248,8 @@ def report(args, meshes, series, height_series):
     series: three uniformly refined meshes (h ~ 1 / cells over height), for
     the observed order and the Richardson estimate; height_series: three
     meshes refined over the height alone, for the rows of the earthquake
-    peaks from the relaxed static state ("relaxed: ")."""
+    peaks from the relaxed static state ("relaxed: "; "rock beta: " with the
+    rock damped by its strain rate only)."""
     window = float(args.window)
     data = {m: collect(args.results, m, window) for m in meshes if os.path.isdir(os.path.join(args.results, m))}
     names = [m for m in data if data[m][0]]
@@ -286,7 +288,7 @@ def report(args, meshes, series, height_series):
             f"{percent(data[m][0][k], f):+.1f}" for m in have[:-1]
         )
         order = estimate = against = "–"
-        three = height_series if k.startswith("relaxed: ") else series
+        three = height_series if k.startswith(("relaxed: ", "rock beta: ")) else series
         if "energy" not in k and all(m in data and k in data[m][0] for m in three):
             f1, f2, f3 = (data[m][0][k] for m in three)
             h1, h2, h3 = (1.0 / meshes[m][3] for m in three)
@@ -303,7 +305,7 @@ def report(args, meshes, series, height_series):
     print("\n".join(lines))
 
     # each joint's peak opening on the meshes that ran the whole window
-    for prefix in ["", "relaxed: "]:
+    for prefix in ["", "relaxed: ", "rock beta: "]:
         key = f"{prefix}joints' peak openings [mm]"
         have = [m for m in names if key in data[m][1]]
         if len(have) < 2:
@@ -345,6 +347,7 @@ def report(args, meshes, series, height_series):
         "static": [k for k in quantities if k.startswith("static")],
         "relaxed": [k for k in quantities if k.startswith("relaxed static")],
         "relaxed_dynamic": [k for k in quantities if k.startswith("relaxed: ")],
+        "rock_beta_dynamic": [k for k in quantities if k.startswith("rock beta: ")],
         "modal": [k for k in quantities if k.startswith("f")],
         "dynamic": [k for k in quantities if k.startswith("peak") or k.startswith("energy")],
     }
