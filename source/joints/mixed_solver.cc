@@ -537,9 +537,9 @@ namespace archdam::joints
             }
         if (!grown)
           break;
-        const unsigned int          n = P.size();
-        LAPACKFullMatrix<double>    S(n, n);
-        dealii::Vector<double>      gaps(n);
+        const unsigned int       n = P.size();
+        LAPACKFullMatrix<double> S(n, n);
+        dealii::Vector<double>   gaps(n);
         for (unsigned int b = 0; b < n; ++b)
           {
             const double *column = &C[static_cast<std::size_t>(dim * P[b]) * m];
