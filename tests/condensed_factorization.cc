@@ -326,6 +326,24 @@ namespace
                                (repeat == 0 ? " first" : " second") +
                                " solve, largest difference relative to the solution's largest",
                              x.linfty_norm() / reference.linfty_norm(), 1e-10);
+
+        // A load on the interface alone (the joints' position correction),
+        // after a condensed solve and before the next: A^{-1} q'.
+        dealii::Vector<double> q2(k);
+        for (auto &v : q2)
+          v = uniform(random);
+        archdam::Vector q2_full(owned, MPI_COMM_WORLD), x2(owned, MPI_COMM_WORLD),
+          reference2(owned, MPI_COMM_WORLD);
+        condensed.solve_interface_load(q2, x2);
+        for (unsigned int g = 0; g < k; ++g)
+          if (owned.is_element(gamma[g]))
+            q2_full(gamma[g]) = q2[g];
+        q2_full.compress(VectorOperation::insert);
+        plain.solve(reference2, q2_full);
+        x2 -= reference2;
+        testing::check_below(name + ": a load on the interface alone against A^-1 q, largest "
+                                    "difference relative to the solution's largest",
+                             x2.linfty_norm() / reference2.linfty_norm(), 1e-10);
       }
 
     // SCOTCH's nested dissection instead of METIS's and MUMPS's PORD: the

@@ -385,6 +385,8 @@ namespace archdam::analysis
                         joint_solver->corrections);
             summary.set("dynamic/joints/largest position correction [m]",
                         joint_solver->largest_correction);
+            summary.set("dynamic/time per step [s]/position correction",
+                        joint_solver->correction_time / steps_run);
           }
       }
     summarize_step_costs(steps_run);

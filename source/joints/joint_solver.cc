@@ -166,12 +166,8 @@ namespace archdam::joints
   void
   JointSolver::correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s) const
   {
-    if (correction_force.empty())
-      return;
-    Vector load(s.u);
-    load = 0.;
-    pairs.add_transpose(correction_force, -1., load);
-    newmark.correct_displacement(load, s);
+    if (!correction_force.empty())
+      newmark.correct_displacement(corrected_displacement, s);
   }
 
   void

@@ -572,6 +572,7 @@ namespace archdam::joints
       {
         rhs.reinit(r);
         correction.reinit(r);
+        corrected_displacement.reinit(r);
       }
     if (C.empty() && m > 0)
       {
@@ -660,6 +661,18 @@ namespace archdam::joints
         G.vmult(Gf, f);
         interface_x -= Gf;
         condensed->expand(interface_x, x);
+        if (!correction_force.empty())
+          {
+            // the position correction's load -B^T nu lies on the interface
+            const auto             start = std::chrono::steady_clock::now();
+            dealii::Vector<double> q(interface_x.size());
+            for (unsigned int j = 0; j < m; ++j)
+              for (const auto &[g, v] : B_interface[j])
+                q[g] -= v * correction_force[j];
+            condensed->solve_interface_load(q, corrected_displacement);
+            correction_time +=
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          }
         return step;
       }
 
@@ -677,6 +690,15 @@ namespace archdam::joints
         pairs.add_transpose(df, -1., rhs);
         A_factor.solve(correction, rhs);
         x += correction;
+      }
+    if (!correction_force.empty())
+      {
+        const auto start = std::chrono::steady_clock::now();
+        rhs              = 0.;
+        pairs.add_transpose(correction_force, -1., rhs);
+        A_factor.solve(corrected_displacement, rhs);
+        correction_time +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       }
     return step;
   }

@@ -24,6 +24,9 @@ namespace archdam::time
     Vec        on_zero = nullptr;
     std::vector<MUMPS_INT> irn, jcn, schur_list, perm;
     std::vector<double>    values, schur, rhs, reduced;
+    /// A right-hand side on the interface alone, as MUMPS's sparse one.
+    std::vector<double>    sparse_values;
+    std::vector<MUMPS_INT> sparse_rows, sparse_start{1, 1};
 
     MUMPS_INT &
     icntl(const unsigned int k)
@@ -264,6 +267,49 @@ namespace archdam::time
     const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
     y.reinit(reduced.size(), true);
     std::copy(reduced.begin(), reduced.end(), y.begin());
+  }
+
+  void
+  CondensedFactorization::solve_interface_load(const dealii::Vector<double> &q,
+                                               archdam::Vector              &x) const
+  {
+    auto      &m    = *mumps;
+    const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
+    AssertDimension(q.size(), gamma.size());
+    if (m.to_zero == nullptr)
+      petsc_check(VecScatterCreateToZero(static_cast<const Vec &>(x), &m.to_zero, &m.on_zero));
+    if (host)
+      {
+        // b as MUMPS's sparse right-hand side (ICNTL(20) = 1): its forward
+        // elimination visits only the fronts that hold b's entries, here the
+        // interface's, eliminated last.
+        m.sparse_values.assign(q.begin(), q.end());
+        m.sparse_rows.resize(gamma.size());
+        for (unsigned int g = 0; g < gamma.size(); ++g)
+          m.sparse_rows[g] = static_cast<MUMPS_INT>(gamma[g] + 1);
+        m.sparse_start[1]  = static_cast<MUMPS_INT>(gamma.size() + 1);
+        m.id.nz_rhs        = static_cast<MUMPS_INT>(gamma.size());
+        m.id.rhs_sparse    = m.sparse_values.data();
+        m.id.irhs_sparse   = m.sparse_rows.data();
+        m.id.irhs_ptr      = m.sparse_start.data();
+        m.rhs.assign(x.size(), 0.); // the solution's place
+        m.id.rhs     = m.rhs.data();
+        m.id.nrhs    = 1;
+        m.id.lrhs    = static_cast<MUMPS_INT>(x.size());
+        m.id.redrhs  = m.reduced.data();
+        m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
+      }
+    m.icntl(20) = 1;
+    m.icntl(26) = 1;
+    elimination.start();
+    m.run(3, "condensation of an interface load");
+    elimination.stop();
+    dealii::Vector<double> x_gamma(gamma.size());
+    const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
+    std::copy(reduced.begin(), reduced.end(), x_gamma.begin());
+    solve_interface(x_gamma);
+    expand(x_gamma, x);
+    m.icntl(20) = 0;
   }
 
   void

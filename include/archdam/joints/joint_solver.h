@@ -115,16 +115,21 @@ namespace archdam::joints
      * With Contraction joints/Position correction, after the Newmark step
      * that solve() made: u_{n+1} += beta2 dt^2 Kbar^{-1} (-B^T nu), the
      * correction that solve() found to bring every closed pair back to
-     * touching (doc/theory/joints.md §11), v and a kept. Nothing when the
+     * touching (doc/theory/joints.md §11), v and a kept. solve() solved it
+     * too: with the factorization condensed on the pairs, its load lies on
+     * the interface and costs one backward substitution
+     * (CondensedFactorization::solve_interface_load). Nothing when the
      * step needed none.
      */
     void
     correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s) const;
     /// The steps that made a position correction, and the largest change of
     /// a pair's normal relative displacement one of them made [m] (this
-    /// solver's run; not kept in a checkpoint).
+    /// solver's run, as the time below; not kept in a checkpoint).
     unsigned long corrections        = 0;
     double        largest_correction = 0.;
+    /// The wall time spent solving for the corrections' displacements [s].
+    double correction_time = 0.;
 
     const NodePairs &pairs;
     /// Pair values, 3 per pair in the local frame (xi, eta, zeta): the
@@ -192,8 +197,10 @@ namespace archdam::joints
     set_load();
 
     /// The position correction's pair forces nu (3 per pair, normal only;
-    /// empty when the last step needed none).
+    /// empty when the last step needed none) and Kbar^{-1} (-B^T nu), which
+    /// solve() finds with them.
     std::vector<double> correction_force;
+    Vector              corrected_displacement;
 
     /// Pair i's strength from the joint law at its history.
     PairStrength

@@ -101,6 +101,14 @@ namespace archdam::time
     void
     expand(const dealii::Vector<double> &x_gamma, Vector &x) const;
 
+    /// x = A^{-1} b for a b that is @p q on the interface and zero off it
+    /// (S x_Γ = q, then expand()): one backward substitution, since the
+    /// forward elimination has nothing to eliminate off the interface
+    /// (MUMPS's sparse right-hand side). Replaces the last condense(): an
+    /// expand() of that one must come first.
+    void
+    solve_interface_load(const dealii::Vector<double> &q, Vector &x) const;
+
   private:
     struct Mumps;
     std::unique_ptr<Mumps>                   mumps;

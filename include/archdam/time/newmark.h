@@ -142,14 +142,15 @@ namespace archdam::time
             const StepSolver          &solve = {});
 
     /**
-     * Move the displacements of the step just advanced by the response of
-     * the effective matrix to @p load, u_{n+1} += beta2 dt^2 Kbar^{-1} load,
-     * leaving v and a as they are: a correction of the positions alone (the
-     * joints' position correction, doc/theory/joints.md §11). One
-     * back-substitution; constrained DOFs take no part.
+     * Move the displacements of the step just advanced by @p x, the
+     * response of the effective matrix to a load b that the caller solved
+     * (x = Kbar^{-1} b): u_{n+1} += beta2 dt^2 x, leaving v and a as they
+     * are, a correction of the positions alone (the joints' position
+     * correction, doc/theory/joints.md §11). Constrained DOFs follow their
+     * masters.
      */
     void
-    correct_displacement(const Vector &load, NewmarkState &s);
+    correct_displacement(const Vector &x, NewmarkState &s);
 
     double
     time_step() const
