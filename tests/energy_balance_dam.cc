@@ -37,7 +37,12 @@ namespace
   std::string
   model(const std::string &foundation)
   {
-    return testing::arch_dam_case(foundation, "results_energy_" + foundation);
+    // The step impulse alone: the position correction (the default) moves
+    // the blocks apart against the contact force without a force doing that
+    // work, so with it the balance closes to the order of that work
+    // (joint_impact bounds it), not to round-off.
+    return testing::arch_dam_case(foundation, "results_energy_" + foundation) +
+           "\nsubsection Contraction joints\n  set Position correction = false\nend\n";
   }
 } // namespace
 

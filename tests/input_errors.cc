@@ -245,8 +245,4 @@ main(int argc, char **argv)
       {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
        "Contraction joints/Solver=monolithic", "--set",
        "Contraction joints/Contact in time=step impulse"});
-  run_archdam("the position correction with the trapezoidal pair forces",
-      {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
-       "Contraction joints/Contact in time=trapezoidal", "--set",
-       "Contraction joints/Position correction=true"});
 }

@@ -379,7 +379,8 @@ namespace archdam::analysis
             summary.set("dynamic/contact problem/factorizations", mixed->factorizations);
             summary.set("dynamic/contact problem/updated solves", mixed->updated_solves);
           }
-        if (p.joints.position_correction)
+        if (p.joints.position_correction &&
+            p.joints.contact_in_time == joints::ContactInTime::step_impulse)
           {
             summary.set("dynamic/joints/steps with a position correction",
                         joint_solver->corrections);

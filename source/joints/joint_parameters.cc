@@ -66,7 +66,9 @@ namespace archdam::joints
                       "penetrates by up to dt/2 times its approach velocity) are moved "
                       "back to touching by a correction of the displacements alone, the "
                       "velocities kept (doc/theory/joints.md §11). It costs one more "
-                      "back-substitution in the steps that correct.");
+                      "backward substitution in the steps that correct. With the "
+                      "trapezoidal forces there is nothing to correct: they hold the "
+                      "closed pairs at their positions themselves.");
     prm.add_parameter("Position tolerance", position_tolerance,
                       "With Position correction: a step corrects when a closed pair stands "
                       "apart or penetrates, or an open pair penetrates, by more than this "

@@ -119,11 +119,6 @@ namespace archdam
                          "mixed (the monolithic reference solver holds the pairs at their "
                          "positions only): with Solver = monolithic, set Contact in time = "
                          "trapezoidal.");
-      if (p.joints.frictional() && p.joints.position_correction &&
-          p.joints.contact_in_time != joints::ContactInTime::step_impulse)
-        throw InputError("Contraction joints/Position correction = true needs Contact in "
-                         "time = step impulse (the trapezoidal forces hold the closed pairs "
-                         "at their positions already).");
       // The static loads are applied in the static stage only, and the
       // dynamic stage starts from its state: without it they would be lost.
       if (p.analysis.runs("dynamic") && !p.analysis.runs("static"))

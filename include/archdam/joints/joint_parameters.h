@@ -199,8 +199,9 @@ namespace archdam::joints
     ContactInTime contact_in_time = ContactInTime::step_impulse;
     /// With the step impulse: after each dynamic step, move the closed
     /// pairs that do not touch back to touching by a correction of the
-    /// displacements alone (doc/theory/joints.md §11).
-    bool position_correction = false;
+    /// displacements alone (doc/theory/joints.md §11). The trapezoidal
+    /// forces hold the closed pairs at their positions themselves.
+    bool position_correction = true;
     /// A step corrects when a pair is off touch by more than this [m]; it
     /// then brings every pair to within Gap tolerance.
     double position_tolerance = 1e-5;
