@@ -1,6 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/run_stopped.h>
+#include <archdam/base/wall_time.h>
 #include <archdam/time/divergence_check.h>
 
 #include <sys/resource.h>
@@ -225,9 +226,7 @@ namespace archdam::analysis
     Vector     load;
     model().space().reinit(load);
     const auto start       = std::chrono::steady_clock::now();
-    const auto elapsed     = [&] {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    };
+    const auto elapsed     = [&] { return seconds_since(start); };
     double       last_report = 0.;
     const double report_every = 10.; // seconds of wall time between progress lines
     const time::DivergenceCheck divergence(model().space());
@@ -379,8 +378,7 @@ namespace archdam::analysis
             summary.set("dynamic/contact problem/factorizations", mixed->factorizations);
             summary.set("dynamic/contact problem/updated solves", mixed->updated_solves);
           }
-        if (p.joints.position_correction &&
-            p.joints.contact_in_time == joints::ContactInTime::step_impulse)
+        if (p.joints.corrects_positions())
           {
             summary.set("dynamic/joints/steps with a position correction",
                         joint_solver->corrections);

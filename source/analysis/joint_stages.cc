@@ -1,5 +1,6 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/wall_time.h>
 
 #include <algorithm>
 #include <chrono>
@@ -179,7 +180,7 @@ namespace archdam::analysis
         model().space().constraints.set_zero(residual);
         out_of_balance = residual.linfty_norm() / (scale > 0. ? scale : 1.);
         const bool   done = t >= r.loading_time && out_of_balance <= r.tolerance;
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double wall = seconds_since(start);
         if (p.output.progress && (wall - last_report > 10. || done))
           {
             last_report = wall;

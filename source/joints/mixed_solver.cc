@@ -1,4 +1,5 @@
 #include <archdam/base/petsc_check.h>
+#include <archdam/base/wall_time.h>
 #include <archdam/joints/joint_solver.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
@@ -6,7 +7,6 @@
 
 #include <algorithm>
 #include <numeric>
-#include <chrono>
 #include <cmath>
 
 namespace archdam::joints
@@ -579,14 +579,13 @@ namespace archdam::joints
         // C is built once, with the first right-hand side's layout
         // (multi-column solves, 64 columns at a time, or from the Schur
         // complement).
-        const auto start = std::chrono::steady_clock::now();
-        if (const auto *condensed = A_factor.condensed())
-          build_from_schur_complement(*condensed);
-        else
-          C = flexibility_matrix(pairs, A_factor, r, 64,
-                                 p.coupling == Coupling::neighbouring_joints);
-        build_time =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        build_time = seconds_of([&] {
+          if (const auto *condensed = A_factor.condensed())
+            build_from_schur_complement(*condensed);
+          else
+            C = flexibility_matrix(pairs, A_factor, r, 64,
+                                   p.coupling == Coupling::neighbouring_joints);
+        });
         augmentation = augmentation_of(C, contact_h());
         C_rows.resize(C.size());
         for (unsigned int j = 0; j < m; ++j)
@@ -651,7 +650,8 @@ namespace archdam::joints
         projected_gauss_seidel(step);
       }
     set_load();
-    if (p.position_correction && !velocity_target.empty())
+    // (velocity targets: a dynamic step)
+    if (p.corrects_positions() && !velocity_target.empty())
       find_position_correction();
 
     if (condensed)
@@ -664,14 +664,13 @@ namespace archdam::joints
         if (!correction_force.empty())
           {
             // the position correction's load -B^T nu lies on the interface
-            const auto             start = std::chrono::steady_clock::now();
-            dealii::Vector<double> q(interface_x.size());
-            for (unsigned int j = 0; j < m; ++j)
-              for (const auto &[g, v] : B_interface[j])
-                q[g] -= v * correction_force[j];
-            condensed->solve_interface_load(q, corrected_displacement);
-            correction_time +=
-              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            correction_time += seconds_of([&] {
+              dealii::Vector<double> q(interface_x.size());
+              for (unsigned int j = 0; j < m; ++j)
+                for (const auto &[g, v] : B_interface[j])
+                  q[g] -= v * correction_force[j];
+              condensed->solve_interface_load(q, corrected_displacement);
+            });
           }
         return step;
       }
@@ -692,14 +691,11 @@ namespace archdam::joints
         x += correction;
       }
     if (!correction_force.empty())
-      {
-        const auto start = std::chrono::steady_clock::now();
-        rhs              = 0.;
+      correction_time += seconds_of([&] {
+        rhs = 0.;
         pairs.add_transpose(correction_force, -1., rhs);
         A_factor.solve(corrected_displacement, rhs);
-        correction_time +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      }
+      });
     return step;
   }
 } // namespace archdam::joints

@@ -228,6 +228,14 @@ namespace archdam::joints
       return model == Model::frictional_contact;
     }
 
+    /// Whether a dynamic step corrects the closed pairs' positions: the
+    /// step impulse with its position correction (doc/theory/joints.md §11).
+    bool
+    corrects_positions() const
+    {
+      return position_correction && contact_in_time == ContactInTime::step_impulse;
+    }
+
     /// The law of joint @p k: the global one with its per-joint overrides.
     /// Throws InputError for a malformed override or a value out of range.
     LawParameters

@@ -1,6 +1,6 @@
+#include <archdam/base/wall_time.h>
 #include <archdam/physics/foundation/massed_foundation.h>
 
-#include <chrono>
 #include <iomanip>
 #include <sstream>
 
@@ -10,12 +10,6 @@ namespace archdam::physics::foundation
 
   namespace
   {
-    double
-    seconds_since(const std::chrono::steady_clock::time_point start)
-    {
-      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    }
-
     /// The MTF, or the fixed boundary (the free field prescribed): the
     /// boundary values computed before each solve.
     class PrescribedBoundary : public MassedFoundation
@@ -69,13 +63,10 @@ namespace archdam::physics::foundation
               time::NewmarkState                        &s,
               const time::NewmarkIntegrator::StepSolver &solve) override
       {
-        auto        start  = std::chrono::steady_clock::now();
-        const auto &values = boundary.next_values(s.time + dt);
-        update_seconds += seconds_since(start);
-        newmark.advance(load_next, s, prescribed, values, solve);
-        start = std::chrono::steady_clock::now();
-        boundary.record(s.u, s.time);
-        update_seconds += seconds_since(start);
+        const std::vector<double> *values = nullptr;
+        update_seconds += seconds_of([&] { values = &boundary.next_values(s.time + dt); });
+        newmark.advance(load_next, s, prescribed, *values, solve);
+        update_seconds += seconds_of([&] { boundary.record(s.u, s.time); });
       }
 
       void
@@ -138,10 +129,10 @@ namespace archdam::physics::foundation
               time::NewmarkState                        &s,
               const time::NewmarkIntegrator::StepSolver &solve) override
       {
-        const auto start     = std::chrono::steady_clock::now();
-        load_with_free_field = load_next;
-        boundary.add_free_field_load(s.time + dt, load_with_free_field);
-        update_seconds += seconds_since(start);
+        update_seconds += seconds_of([&] {
+          load_with_free_field = load_next;
+          boundary.add_free_field_load(s.time + dt, load_with_free_field);
+        });
         newmark.advance(load_with_free_field, s, solve);
       }
 
