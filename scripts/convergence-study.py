@@ -14,6 +14,9 @@ motion and time step on each:
   q2-229      Q2, 2 x 2 x 9 (the production mesh with more cells over the height)
   q2-2212     Q2, 2 x 2 x 12 (and twice the production mesh's cells over the height:
               the height direction's series 6, 9, 12 for the earthquake peaks)
+  q2-2215     Q2, 2 x 2 x 15 and
+  q2-2218     Q2, 2 x 2 x 18: the height series continued on the short rock
+              (MESH-extent050 below)
   fine        Q2, 3 x 3 x 9
   (rock and water cell sizes as in the case file: the rock and water meshes
   follow the dam's cells at the interfaces and grade to 45 m and 35 m away
@@ -26,6 +29,10 @@ motion and time step on each:
               one height (extent050, extent075); upstream it keeps one height,
               where a shorter rock puts a point of the MTF into the canyon's
               water at 5 ms
+  MESH-extentNN  any mesh above with the rock reaching NN/100 of the dam's
+              height as extentNN (q2-2218-extent050: the finest meshes of the
+              height series on a rock that fits in memory; doc/convergence.md,
+              "The height series on the short rock")
 
 For each mesh up to six runs (each kept when its summary.json exists):
 
@@ -43,6 +50,10 @@ For each mesh up to six runs (each kept when its summary.json exists):
   dynamic_rock_beta the same with the rock damped by its strain rate only (the
                   dam's Rayleigh beta, no mass term: doc/convergence.md, "The
                   earthquake peaks over the height with the rock's own damping")
+                  (these dynamic runs with the joints' step impulse alone, as
+                  they were made before the position correction)
+  corrected_rock_beta dynamic_rock_beta with the position correction, the
+                  joints' default scheme (doc/theory/joints.md §11)
   relaxed         the static stage alone by dynamic relaxation (the load
                   ramped over 1 s in a damped transient, steps of 10 ms,
                   damping critical at 1.5 Hz, out of balance 1e-6): the one
@@ -73,6 +84,8 @@ MESHES = {
     "q2-326": (2, 3, 2, 6),
     "q2-229": (2, 2, 2, 9),
     "q2-2212": (2, 2, 2, 12),
+    "q2-2215": (2, 2, 2, 15),
+    "q2-2218": (2, 2, 2, 18),
     "fine": (2, 3, 3, 9),
 }
 # uniformly refined Q2 meshes: observed orders and Richardson estimates
@@ -83,19 +96,26 @@ HEIGHT_SERIES = ["production", "q2-229", "q2-2212"]
 RUNS = ["dynamic", "modal_massed", "modal_massless"]
 
 
+def extent_settings(percent):
+    e = int(percent) / 100
+    return [f"Mesh/Arch dam/Foundation {where}={e}"
+            for where in ["depth", "extent downstream", "extent to the sides"]]
+
+
 def mesh_settings(mesh):
+    extra = []
+    if "-extent" in mesh:
+        mesh, percent = mesh.split("-extent")
+        extra = extent_settings(percent)
     if mesh.startswith("rock"):
         # rockNN: the q2-113 dam with a rock cell size of NN m
         degree, nb, nt, nz = MESHES["q2-113"]
-        extra = [f"Mesh/Arch dam/Rock cell size={mesh[4:]}"]
+        extra.append(f"Mesh/Arch dam/Rock cell size={mesh[4:]}")
     elif mesh.startswith("extent"):
         degree, nb, nt, nz = MESHES["production"]
-        e = int(mesh[6:]) / 100
-        extra = [f"Mesh/Arch dam/Foundation {where}={e}"
-                 for where in ["depth", "extent downstream", "extent to the sides"]]
+        extra = extent_settings(mesh[6:])
     else:
         degree, nb, nt, nz = MESHES[mesh]
-        extra = []
     return [
         f"Finite element/Degree={degree}",
         f"Mesh/Arch dam/Cells across each block={nb}",
@@ -117,22 +137,26 @@ def run_settings(what, end_time):
     ]
     if what == "relaxed":
         return ["Analysis/Stages=static"] + relaxation
-    if what.startswith("dynamic"):
+    if what.startswith("dynamic") or what == "corrected_rock_beta":
         # the static state is written as the dynamic stage's first field
         dynamic = [f"Time integration/End time={end_time}", "Output/Field output interval=1000000"]
         if what == "dynamic":
             return dynamic
+        # the rock without the mass term, which damps the incoming free
+        # field (doc/theory/foundation.md §4); beta = 2 zeta / (w1 + w2) of
+        # the case's damping (5 % at 2 and 15 Hz)
+        rock_beta = [
+            "Damping/Rock/Mode=coefficients",
+            "Damping/Rock/Mass proportional coefficient=0",
+            "Damping/Rock/Stiffness proportional coefficient=0.0009362",
+        ]
+        step_impulse_alone = ["Contraction joints/Position correction=false"]
         if what == "dynamic_relaxed":
-            return dynamic + relaxation
+            return dynamic + relaxation + step_impulse_alone
         if what == "dynamic_rock_beta":
-            # the rock without the mass term, which damps the incoming free
-            # field (doc/theory/foundation.md §4); beta = 2 zeta / (w1 + w2)
-            # of the case's damping (5 % at 2 and 15 Hz)
-            return dynamic + relaxation + [
-                "Damping/Rock/Mode=coefficients",
-                "Damping/Rock/Mass proportional coefficient=0",
-                "Damping/Rock/Stiffness proportional coefficient=0.0009362",
-            ]
+            return dynamic + relaxation + rock_beta + step_impulse_alone
+        if what == "corrected_rock_beta":
+            return dynamic + relaxation + rock_beta
         sys.exit(f"unknown run {what}")
     foundation = "massed" if what == "modal_massed" else "massless"
     return [
