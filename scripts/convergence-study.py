@@ -36,8 +36,9 @@ motion and time step on each:
 
 For each mesh up to six runs (each kept when its summary.json exists):
 
-  dynamic         the case as shipped (static stage, then the motion) up to
-                  --end-time, the static field written (stresses at the crown)
+  dynamic         the case as it first shipped (static stage, then the motion;
+                  the rock damped like the dam) up to --end-time, the static
+                  field written (stresses at the crown)
   modal_massed    the first five modes of the grouted dam (joints glued) with
                   the compressible water on the massed rock
   modal_massless  the same on the massless rock (the dam-water modes alone)
@@ -53,7 +54,8 @@ For each mesh up to six runs (each kept when its summary.json exists):
                   (these dynamic runs with the joints' step impulse alone, as
                   they were made before the position correction)
   corrected_rock_beta dynamic_rock_beta with the position correction, the
-                  joints' default scheme (doc/theory/joints.md §11)
+                  joints' default scheme (doc/theory/joints.md §11): the case
+                  as it now ships, from the relaxed static state
   relaxed         the static stage alone by dynamic relaxation (the load
                   ramped over 1 s in a damped transient, steps of 10 ms,
                   damping critical at 1.5 Hz, out of balance 1e-6): the one
@@ -140,8 +142,11 @@ def run_settings(what, end_time):
     if what.startswith("dynamic") or what == "corrected_rock_beta":
         # the static state is written as the dynamic stage's first field
         dynamic = [f"Time integration/End time={end_time}", "Output/Field output interval=1000000"]
+        # the study's first runs: the rock damped like the dam, as the case
+        # was then
+        rock_like_dam = ["Damping/Rock/Mode=same as the dam"]
         if what == "dynamic":
-            return dynamic
+            return dynamic + rock_like_dam
         # the rock without the mass term, which damps the incoming free
         # field (doc/theory/foundation.md §4); beta = 2 zeta / (w1 + w2) of
         # the case's damping (5 % at 2 and 15 Hz)
@@ -152,7 +157,7 @@ def run_settings(what, end_time):
         ]
         step_impulse_alone = ["Contraction joints/Position correction=false"]
         if what == "dynamic_relaxed":
-            return dynamic + relaxation + step_impulse_alone
+            return dynamic + relaxation + rock_like_dam + step_impulse_alone
         if what == "dynamic_rock_beta":
             return dynamic + relaxation + rock_beta + step_impulse_alone
         if what == "corrected_rock_beta":
