@@ -96,6 +96,9 @@ SERIES = ["q2-113", "production", "fine"]
 # peaks from the relaxed static state ("relaxed: " rows)
 HEIGHT_SERIES = ["production", "q2-229", "q2-2212"]
 RUNS = ["dynamic", "modal_massed", "modal_massless"]
+# the height series on the rock reaching half the dam's height (memory: the
+# 18-cell mesh on the whole rock would not fit), run as corrected_rock_beta
+SHORT_ROCK_SERIES = [f"{m}-extent050" for m in ["production", "q2-229", "q2-2212", "q2-2215", "q2-2218"]]
 
 
 def extent_settings(percent):
@@ -212,6 +215,7 @@ def main():
         import convergence_report
 
         convergence_report.report(args, MESHES, SERIES, HEIGHT_SERIES)
+        convergence_report.short_rock_report(args, MESHES, SHORT_ROCK_SERIES)
 
 
 if __name__ == "__main__":

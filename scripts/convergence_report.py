@@ -4,7 +4,9 @@ Reads results/convergence/<mesh>/<run>/, writes the tables to
 convergence_tables.txt there (and the screen) and the figures
 convergence_{static,relaxed,modal,dynamic,relaxed_dynamic,rock_beta_dynamic}.png
 there or into --figures; the earthquake peaks of the dynamic_relaxed runs are
-prefixed "relaxed: ", those of the dynamic_rock_beta runs "rock beta: ".
+prefixed "relaxed: ", those of the dynamic_rock_beta runs "rock beta: ";
+the height series on the short rock (corrected_rock_beta runs) goes to
+convergence_short_rock.png and its own tables.
 """
 import csv
 import json
@@ -206,6 +208,7 @@ def collect(results, mesh, window):
     peaks("dynamic", "")
     peaks("dynamic_relaxed", "relaxed: ")
     peaks("dynamic_rock_beta", "rock beta: ")
+    peaks("corrected_rock_beta", "corrected: ")
     for run, label in [("modal_massed", "massed rock"), ("modal_massless", "massless rock")]:
         d = os.path.join(results, mesh, run)
         s = summary(d)
@@ -352,26 +355,110 @@ def report(args, meshes, series, height_series):
         "dynamic": [k for k in quantities if k.startswith("peak") or k.startswith("energy")],
     }
     for group, keys in groups.items():
-        if not keys:
+        if keys:
+            draw_panels(os.path.join(out_dir, f"convergence_{group}.png"), keys,
+                        lambda k: [(data[m][1]["DOFs"], data[m][0][k], m)
+                                   for m in names if k in data[m][0] and "DOFs" in data[m][1]])
+
+
+def draw_panels(path, keys, points):
+    """One panel per quantity k: points(k) = [(DOFs, value, label)] on a
+    logarithmic DOF axis, written to @p path."""
+    cols = 4
+    rows = (len(keys) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
+    for ax, k in zip(axes.flat, keys):
+        pts = points(k)
+        ax.semilogx([p[0] for p in pts], [p[1] for p in pts], "o-")
+        # the meshes' DOFs as the ticks (a range within one decade
+        # otherwise gets overlapping minor labels)
+        ax.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
+        ax.set_xticks([p[0] for p in pts], [f"{p[0] / 1e3:.0f}k" for p in pts])
+        for x, y, m in pts:
+            ax.annotate(m, (x, y), fontsize=7)
+        ax.set_title(k, fontsize=8)
+        ax.set_xlabel("DOFs", fontsize=8)
+        ax.tick_params(labelsize=7)
+        ax.grid(True, alpha=0.3)
+    for ax in list(axes.flat)[len(keys):]:
+        ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def short_rock_report(args, meshes, names):
+    """The height series of @p names (MESH-extentNN, coarsest first), each
+    run as corrected_rock_beta: the static state, the earthquake peaks over
+    the window and each joint's peak opening, each mesh against the finest,
+    the observed order and Richardson estimate of the three finest; appended
+    to convergence_tables.txt, the figure convergence_short_rock.png."""
+    window = float(args.window)
+    run = "corrected_rock_beta"
+    rows = []
+    for m in names:
+        d = os.path.join(args.results, m, run)
+        s = summary(d)
+        if not s or s["dynamic/end time [s]"] < window - 1e-9:
             continue
-        cols = 4
-        rows = (len(keys) + cols - 1) // cols
-        fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 3 * rows), squeeze=False)
-        for ax, k in zip(axes.flat, keys):
-            pts = [(data[m][1]["DOFs"], data[m][0][k], m) for m in names if k in data[m][0] and "DOFs" in data[m][1]]
-            ax.semilogx([p[0] for p in pts], [p[1] for p in pts], "o-")
-            # the meshes' DOFs as the ticks (a range within one decade
-            # otherwise gets overlapping minor labels)
-            ax.xaxis.set_minor_locator(matplotlib.ticker.NullLocator())
-            ax.set_xticks([p[0] for p in pts], [f"{p[0] / 1e3:.0f}k" for p in pts])
-            for x, y, m in pts:
-                ax.annotate(m, (x, y), fontsize=7)
-            ax.set_title(k, fontsize=8)
-            ax.set_xlabel("DOFs", fontsize=8)
-            ax.tick_params(labelsize=7)
-            ax.grid(True, alpha=0.3)
-        for ax in list(axes.flat)[len(keys):]:
-            ax.axis("off")
-        fig.tight_layout()
-        fig.savefig(os.path.join(out_dir, f"convergence_{group}.png"), dpi=110)
-        plt.close(fig)
+        q, info = collect(args.results, m, window)
+        q = {k[len("corrected: "):]: v for k, v in q.items() if k.startswith("corrected: ")}
+        static = {
+            "static: crest - base, x [mm]": 1e3 * (s["static/crest.ux [m]"] - s["static/base.ux [m]"]),
+            "static: largest joint opening [mm]": largest_opening(s, "static"),
+        }
+        wall, rss = time_txt(os.path.join(d, "time.txt"))
+        rows.append((m, meshes[m.split("-extent")[0]][3], {**static, **q}, info, wall, rss))
+    if len(rows) < 2:
+        return
+    lines = ["", "| mesh | cells over the height | DOFs | node pairs | wall time [min], peak memory [GB] |",
+             "|---|---|---|---|---|"]
+    for m, nz, q, info, wall, rss in rows:
+        lines.append(f"| {m} | {nz} | {info['DOFs']:,} | {info['node pairs']:,} | {wall / 60:.1f}, {rss:.1f} |")
+    finest = rows[-1]
+    three = rows[-3:] if len(rows) >= 3 else None
+    header = ("| quantity | " + " | ".join(str(r[1]) for r in rows) + " | each coarser mesh against " +
+              f"{finest[1]} cells [%] | observed order ({', '.join(str(r[1]) for r in three or [])}) | "
+              "Richardson estimate | each mesh against it [%] |")
+    lines += ["", header, "|---" * (len(rows) + 5) + "|"]
+    keys = list(finest[2])
+    for k in keys:
+        values = [r[2].get(k) for r in rows]
+        if any(v is None for v in values):
+            continue
+        cells = " | ".join(f"{v:.4g}" for v in values)
+        if "energy" in k:
+            lines.append(f"| {k} | {cells} | – | – | – | – |")
+            continue
+        errors = ", ".join(f"{percent(v, values[-1]):+.1f}" for v in values[:-1])
+        order = estimate = against = "–"
+        if three:
+            f1, f2, f3 = (r[2][k] for r in three)
+            h1, h2, h3 = (1.0 / r[1] for r in three)
+            p = observed_order(f1, f2, f3, h1, h2, h3)
+            if p is not None:
+                fe = f3 + (f3 - f2) / ((h2 / h3) ** p - 1.0)
+                order, estimate = f"{p:.2f}", f"{fe:.4g}"
+                against = ", ".join(f"{percent(v, fe):+.1f}" for v in values)
+            elif (f1 - f2) * (f2 - f3) > 0:
+                order = "none fits (the changes shrink too slowly)"
+            else:
+                order = "not monotone"
+        lines.append(f"| {k} | {cells} | {errors} | {order} | {estimate} | {against} |")
+    key = "corrected: joints' peak openings [mm]"
+    have = [r for r in rows if key in r[3]]
+    if len(have) >= 2:
+        last = have[-1][3][key]
+        lines += ["", "| joint | " + " | ".join(f"{r[1]} cells" for r in have) +
+                  f" | each coarser mesh against {have[-1][1]} cells [%] |", "|---" * (len(have) + 2) + "|"]
+        for j in range(13):
+            values = [r[3][key][j] for r in have]
+            lines.append(f"| {j} | " + " | ".join(f"{v:.2f}" for v in values) + " | " +
+                         ", ".join(f"{percent(v, last[j]):+.1f}" for v in values[:-1]) + " |")
+    print("\n".join(lines))
+    with open(os.path.join(args.results, "convergence_tables.txt"), "a") as f:
+        f.write("\n".join(lines) + "\n")
+
+    keys = [k for k in keys if "energy" not in k and all(k in r[2] for r in rows)]
+    draw_panels(os.path.join(args.figures or args.results, "convergence_short_rock.png"), keys,
+                lambda k: [(r[3]["DOFs"], r[2][k], f"{r[1]} cells") for r in rows])
