@@ -242,6 +242,19 @@ def observed_order(f1, f2, f3, h1, h2, h3):
     return 0.5 * (lo + hi)
 
 
+def richardson(f, h):
+    """The observed order of three values f on meshes of sizes h (coarsest
+    first) and the Richardson estimate: (order text, estimate or None)."""
+    f1, f2, f3 = f
+    h1, h2, h3 = h
+    p = observed_order(f1, f2, f3, h1, h2, h3)
+    if p is not None:
+        return f"{p:.2f}", f3 + (f3 - f2) / ((h2 / h3) ** p - 1.0)
+    if (f1 - f2) * (f2 - f3) > 0:
+        return "none fits (the changes shrink too slowly)", None
+    return "not monotone", None
+
+
 def percent(a, b):
     return 100.0 * (a - b) / abs(b) if b else float("nan")
 
@@ -293,16 +306,9 @@ def report(args, meshes, series, height_series):
         order = estimate = against = "–"
         three = height_series if k.startswith(("relaxed: ", "rock beta: ")) else series
         if "energy" not in k and all(m in data and k in data[m][0] for m in three):
-            f1, f2, f3 = (data[m][0][k] for m in three)
-            h1, h2, h3 = (1.0 / meshes[m][3] for m in three)
-            p = observed_order(f1, f2, f3, h1, h2, h3)
-            if p is not None:
-                fe = f3 + (f3 - f2) / ((h2 / h3) ** p - 1.0)
-                order, estimate, against = f"{p:.2f}", f"{fe:.4g}", f"{percent(data[series[1]][0][k], fe):+.1f}"
-            elif (f1 - f2) * (f2 - f3) > 0:
-                order = "none fits (the changes shrink too slowly)"
-            else:
-                order = "not monotone"
+            order, fe = richardson([data[m][0][k] for m in three], [1.0 / meshes[m][3] for m in three])
+            if fe is not None:
+                estimate, against = f"{fe:.4g}", f"{percent(data[series[1]][0][k], fe):+.1f}"
         cells = " | ".join(f"{v:.4g}" if v is not None else "–" for v in values)
         lines.append(f"| {k} | {cells} | {finest} | {errors} | {order} | {estimate} | {against} |")
     print("\n".join(lines))
@@ -433,17 +439,10 @@ def short_rock_report(args, meshes, names):
         errors = ", ".join(f"{percent(v, values[-1]):+.1f}" for v in values[:-1])
         order = estimate = against = "–"
         if three:
-            f1, f2, f3 = (r[2][k] for r in three)
-            h1, h2, h3 = (1.0 / r[1] for r in three)
-            p = observed_order(f1, f2, f3, h1, h2, h3)
-            if p is not None:
-                fe = f3 + (f3 - f2) / ((h2 / h3) ** p - 1.0)
-                order, estimate = f"{p:.2f}", f"{fe:.4g}"
+            order, fe = richardson([r[2][k] for r in three], [1.0 / r[1] for r in three])
+            if fe is not None:
+                estimate = f"{fe:.4g}"
                 against = ", ".join(f"{percent(v, fe):+.1f}" for v in values)
-            elif (f1 - f2) * (f2 - f3) > 0:
-                order = "none fits (the changes shrink too slowly)"
-            else:
-                order = "not monotone"
         lines.append(f"| {k} | {cells} | {errors} | {order} | {estimate} | {against} |")
     key = "corrected: joints' peak openings [mm]"
     have = [r for r in rows if key in r[3]]
