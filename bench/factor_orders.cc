@@ -1,7 +1,8 @@
 // Benchmark (issue 19; doc/performance.md §7): the fill-reducing order of the
 // condensed factorization on a real case, by default the reference case on
-// its production mesh (prm/paper_235m_dam.prm: Q2, 245,706 DOFs, 780 node
-// pairs). On the dynamic stage's effective matrix (the coupled dam-water
+// its production mesh (prm/paper_235m_dam.prm: Q2 2 x 2 x 9, 291,114 DOFs,
+// 1,170 node pairs; the measurements of bench/RESULTS.md before 2026-11-29
+// were made on the former 2 x 2 x 6, 245,706 DOFs, 780 node pairs). On the dynamic stage's effective matrix (the coupled dam-water
 // system with the foundation's dashpots, made by
 // Simulation::make_integrator()) with the node pairs' DOFs last:
 //   nested dissection: METIS on the node graph (time/fill_reducing_order.h,

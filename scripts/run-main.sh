@@ -3,7 +3,7 @@
 # arch dam, prm/paper_235m_dam.prm, every stage and output), then draw its
 # figures. It runs on the coarse mesh of scripts/compare-paper-variants.py:
 # the case's default (production) mesh runs every stage too, but its 4,000
-# steps take 48-90 minutes on machines of this kind (README, "The main job"). Results go to ./results/paper_235m_dam_coarse, figures to
+# steps take hours on machines of this kind (README, "The main job"). Results go to ./results/paper_235m_dam_coarse, figures to
 # ./results/figures_coarse.
 set -euo pipefail
 cd "$(dirname "$0")/.."
