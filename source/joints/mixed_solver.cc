@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <cmath>
 
@@ -194,20 +195,23 @@ namespace archdam::joints
     const auto   flexibility = [&](const unsigned int j, const unsigned int row) {
       return hc * C_rows[static_cast<std::size_t>(row) * m + j];
     };
-    // Row dim i + k of the system (into @p row, unless null) and its
-    // right-hand side, from the pair's current state. Only the rows that
-    // enter a new LU or its update are built; the others give their
-    // right-hand side alone.
-    const auto system_row = [&](const unsigned int i, const unsigned int k, double *row) {
+    // Row dim i + k of the system from the pair's current state, in parts:
+    //   row = sum_l flex[l] (h C)(dim i + l, .) + sum_l own[l] e_{dim i + l},
+    // rows of h C with coefficients plus entries on the pair's own unknowns,
+    // and its right-hand side.
+    struct RowParts
+    {
+      std::array<double, dim> flex{}, own{};
+      double                  rhs = 0.;
+    };
+    const auto row_parts = [&](const unsigned int i, const unsigned int k) {
       const unsigned int r_ik = dim * i + k;
-      if (row)
-        std::fill(row, row + m, 0.);
+      RowParts           parts;
       if (state[i] == PairState::separation)
         {
           // f = 0, scaled like the flexibility rows (metres) for the pivoting
-          if (row)
-            row[r_ik] = flexibility(r_ik, r_ik);
-          return 0.;
+          parts.own[k] = flexibility(r_ik, r_ik);
+          return parts;
         }
       if (k > 0 && state[i] == PairState::slip)
         {
@@ -217,29 +221,32 @@ namespace archdam::joints
           const auto   P          = [&](const unsigned int k1, const unsigned int k2) {
             return (k1 == k2 ? 1. : 0.) - d[k1] * d[k2];
           };
-          if (row)
-            {
-              // The row divided by r: in metres like the other rows, so that
-              // the LU's pivoting sees rows of one scale.
-              // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - target_t
-              if (kappa > 0.)
-                for (unsigned int j = 0; j < m; ++j)
-                  row[j] = kappa * (P(k, 1) * flexibility(j, dim * i + 1) +
-                                    P(k, 2) * flexibility(j, dim * i + 2));
-              for (const unsigned int l : {1u, 2u})
-                row[dim * i + l] += ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
-              row[dim * i] += strength_i.friction * d[k] / r;
-            }
-          double b = strength_i.cohesion_force * d[k] / r;
+          // The row divided by r: in metres like the other rows, so that
+          // the LU's pivoting sees rows of one scale.
+          // -kappa r P dw_t(f), dw_t = s_t - h (C f)_t - target_t
+          parts.rhs = strength_i.cohesion_force * d[k] / r;
           for (const unsigned int l : {1u, 2u})
-            b += kappa * P(k, l) * (s[dim * i + l] - target[dim * i + l]);
-          return b;
+            {
+              parts.flex[l] = kappa * P(k, l);
+              parts.own[l]  = ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
+              parts.rhs += kappa * P(k, l) * (s[dim * i + l] - target[dim * i + l]);
+            }
+          parts.own[0] = strength_i.friction * d[k] / r;
+          return parts;
         }
       // (h C f)_ik = s_ik - w_target,k
-      if (row)
-        for (unsigned int j = 0; j < m; ++j)
-          row[j] = flexibility(j, r_ik);
-      return s[r_ik] - target[r_ik];
+      parts.flex[k] = 1.;
+      parts.rhs     = s[r_ik] - target[r_ik];
+      return parts;
+    };
+    const auto system_row = [&](const unsigned int i, const RowParts &parts, double *row) {
+      std::fill(row, row + m, 0.);
+      for (unsigned int l = 0; l < dim; ++l)
+        if (parts.flex[l] != 0.)
+          for (unsigned int j = 0; j < m; ++j)
+            row[j] += parts.flex[l] * flexibility(j, dim * i + l);
+      for (unsigned int l = 0; l < dim; ++l)
+        row[dim * i + l] += parts.own[l];
     };
     // What a pair's rows depend on besides C, h and r.
     const auto rows_of = [&](const unsigned int i) {
@@ -272,7 +279,7 @@ namespace archdam::joints
           {
             for (unsigned int k = 0; k < dim; ++k)
               {
-                system_row(i, k, row.data());
+                system_row(i, row_parts(i, k), row.data());
                 for (unsigned int j = 0; j < m; ++j)
                   base(dim * i + k, j) = row[j];
               }
@@ -286,13 +293,15 @@ namespace archdam::joints
 
     const unsigned int     n_changed = changed.size();
     dealii::Vector<double> b(m);
-    std::vector<double>    rows(static_cast<std::size_t>(n_changed) * m);
+    std::vector<RowParts>  changed_parts(n_changed);
     for (unsigned int i = 0, a = 0; i < pairs.size(); ++i)
       for (unsigned int k = 0; k < dim; ++k)
         {
-          const unsigned int r_ik = dim * i + k;
-          const bool         in_R = a < n_changed && changed[a] == r_ik;
-          b(r_ik) = system_row(i, k, in_R ? &rows[static_cast<std::size_t>(a++) * m] : nullptr);
+          const unsigned int r_ik  = dim * i + k;
+          const RowParts     parts = row_parts(i, k);
+          b(r_ik)                  = parts.rhs;
+          if (a < n_changed && changed[a] == r_ik)
+            changed_parts[a++] = parts;
         }
     dealii::Vector<double> x(b);
     base.solve(x); // y
@@ -317,27 +326,85 @@ namespace archdam::joints
                   update_columns[missing[c]](j) = Z(j, c);
               }
           }
-        // T = A_R Z and t = A_R y - b_R as matrix products.
-        dealii::LAPACKFullMatrix<double> A_R(n_changed, m), Z(m, n_changed), T(n_changed, n_changed);
+        // T = A_R Z and t = A_R y - b_R. Where a new row's rows of h C are
+        // rows of the base (a pair that the base has in stick, or a normal
+        // row), A0_r Z = (E_R)_r and A0_r y = b_r give those parts without a
+        // product: such a row (a slipping pair that the base has stuck, a
+        // separated pair, a pair slipping with kappa = 0) costs its own few
+        // entries of Z and y; the other rows are built and multiplied by Z.
+        const auto base_row_is_flexibility = [&](const unsigned int i, const unsigned int l) {
+          return base_rows[i].state == PairState::stick ||
+                 (base_rows[i].state == PairState::slip && l == 0);
+        };
+        std::vector<int> position(m, -1);
+        for (unsigned int a = 0; a < n_changed; ++a)
+          position[changed[a]] = a;
+        const auto Z_entry = [&](const unsigned int j, const unsigned int c) {
+          return update_columns[changed[c]](j);
+        };
+        dealii::LAPACKFullMatrix<double> T(n_changed, n_changed);
+        dealii::Vector<double>           t(n_changed);
+        std::vector<unsigned int>        products; // rows of R multiplied by Z
         for (unsigned int a = 0; a < n_changed; ++a)
           {
-            const double *A_a = &rows[static_cast<std::size_t>(a) * m];
-            const auto   &z   = update_columns[changed[a]];
-            for (unsigned int j = 0; j < m; ++j)
+            const unsigned int i     = changed[a] / dim;
+            const RowParts    &parts = changed_parts[a];
+            bool               cheap = true;
+            for (unsigned int l = 0; l < dim; ++l)
+              cheap = cheap && (parts.flex[l] == 0. || base_row_is_flexibility(i, l));
+            if (!cheap)
               {
-                A_R(a, j) = A_a[j];
-                Z(j, a)   = z(j);
+                products.push_back(a);
+                continue;
+              }
+            t(a) = -b(changed[a]);
+            for (unsigned int l = 0; l < dim; ++l)
+              {
+                const unsigned int r_il = dim * i + l;
+                if (parts.flex[l] != 0.)
+                  {
+                    t(a) += parts.flex[l] * b(r_il);
+                    if (position[r_il] >= 0)
+                      T(a, position[r_il]) += parts.flex[l];
+                  }
+                if (parts.own[l] != 0.)
+                  {
+                    t(a) += parts.own[l] * x(r_il);
+                    for (unsigned int c = 0; c < n_changed; ++c)
+                      T(a, c) += parts.own[l] * Z_entry(r_il, c);
+                  }
               }
           }
-        A_R.mmult(T, Z);
-        dealii::Vector<double> t(n_changed), correction(m);
-        A_R.vmult(t, x);
-        for (unsigned int a = 0; a < n_changed; ++a)
-          t(a) -= b(changed[a]);
+        if (!products.empty())
+          {
+            const unsigned int               n_products = products.size();
+            dealii::LAPACKFullMatrix<double> A_P(n_products, m), Z(m, n_changed),
+              T_P(n_products, n_changed);
+            std::vector<double> row(m);
+            for (unsigned int p = 0; p < n_products; ++p)
+              {
+                const unsigned int a = products[p];
+                system_row(changed[a] / dim, changed_parts[a], row.data());
+                double y_a = 0.;
+                for (unsigned int j = 0; j < m; ++j)
+                  {
+                    A_P(p, j) = row[j];
+                    y_a += row[j] * x(j);
+                  }
+                t(a) = y_a - b(changed[a]);
+              }
+            for (unsigned int c = 0; c < n_changed; ++c)
+              for (unsigned int j = 0; j < m; ++j)
+                Z(j, c) = Z_entry(j, c);
+            A_P.mmult(T_P, Z);
+            for (unsigned int p = 0; p < n_products; ++p)
+              for (unsigned int c = 0; c < n_changed; ++c)
+                T(products[p], c) = T_P(p, c);
+          }
         T.compute_lu_factorization();
         T.solve(t);
-        Z.vmult(correction, t);
-        x -= correction;
+        for (unsigned int a = 0; a < n_changed; ++a)
+          x.add(-t(a), update_columns[changed[a]]);
       }
     for (unsigned int j = 0; j < m; ++j)
       force[j] = x(j);
