@@ -128,6 +128,21 @@ def crest_deformation(r):
     return [v - d[0] for v in d]
 
 
+FACES = ["crest", "upstream face", "downstream face"]
+
+
+def face_maxima(path):
+    """{face: (largest s1 over the run [Pa], its height z [m])} of a stress
+    envelope file (faces named crest, upstream, downstream)."""
+    if not os.path.exists(path):
+        return {}
+    best = {}
+    for face, points in stress_envelope_plot.read(path).items():
+        x, y, z, s1, t = max(points, key=lambda p: p[3])
+        best[face if face == "crest" else face + " face"] = (s1, z)
+    return best
+
+
 def peak(values):
     return max(values, key=abs) if values else float("nan")
 
@@ -224,22 +239,33 @@ def draw_all(args, results):
     with open(path, "w") as f:
         w = csv.writer(f)
         w.writerow(["case", "peak opening A [m]", "peak opening B [m]", "largest crest opening [m]",
-                    "joint", "peak s1 at C [Pa]", "peak crest ux relative to the base [m]"])
+                    "joint", "mean of the joints' peak crest openings [m]", "peak s1 at C [Pa]",
+                    "peak crest ux relative to the base [m]"]
+                   + [f"largest s1 on the {face} [Pa]" for face in FACES]
+                   + [f"its height on the {face} [m]" for face in FACES]
+                   + ["energy balance error", "wall time [s]", "peak resident memory [GB]"])
         for c in CASES:
             r = results.get(c)
             if not r:
                 continue
-            j, h, crest = r["joints"], r["histories"], r["crest"]
+            j, h, crest, summary = r["joints"], r["histories"], r["crest"], r["summary"]
             largest = max(range(len(crest["joint"])), key=lambda i: crest["max opening [m]"][i]) if crest else None
+            faces = face_maxima(os.path.join(r["dir"], "stress_envelope_dynamic.csv"))
+            memory = summary.get("dynamic", {}).get("memory [MB]", {}).get("peak resident, all processes")
             w.writerow([
                 c,
                 max(j["A.opening [m]"]) if j else "",
                 max(j["B.opening [m]"]) if j else "",
                 crest["max opening [m]"][largest] if crest else "",
                 int(crest["joint"][largest]) if crest else "",
+                sum(crest["max opening [m]"]) / len(crest["joint"]) if crest else "",
                 max(h["C.s1 [Pa]"]),
                 peak(crest_deformation(r)),
-            ])
+            ] + [faces[face][0] if face in faces else "" for face in FACES]
+              + [faces[face][1] if face in faces else "" for face in FACES]
+              + [summary.get("energy balance", {}).get("balance error", ""),
+                 sum(summary.get("wall time [s]", {}).values()),
+                 1e-3 * memory if memory else ""])
     print("wrote", path)
 
 
