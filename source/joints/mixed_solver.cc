@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <numeric>
 #include <cmath>
 
@@ -425,6 +426,20 @@ namespace archdam::joints
   MixedJointSolver::active_set_iteration(ContactStep &step, const unsigned int limit)
   {
     std::vector<double> before;
+    // How often the iteration has come to each set of states (with the
+    // damage) from another: one come to for the cycle_visits-th time means
+    // the iteration cycles, typically one pair opening and closing in turn
+    // while the slipping pairs' directions move (doc/theory/joints.md §6).
+    // Iterations that keep the states and only turn slip directions are not
+    // visits.
+    const auto states_now = [&] {
+      std::vector<unsigned char> s(pairs.size());
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        s[i] = 2 * static_cast<unsigned char>(state[i]) + (damaged[i] ? 1 : 0);
+      return s;
+    };
+    std::map<std::vector<unsigned char>, unsigned int> visits;
+    std::vector<unsigned char>                         previous = states_now();
     for (unsigned int k = 0; k < limit; ++k)
       {
         ++step.iterations;
@@ -452,6 +467,10 @@ namespace archdam::joints
         step.gap_residual = gap_residual(step.worst_pair);
         if (!changed && step.gap_residual <= p.gap_tolerance)
           return step.converged = true;
+        const auto states = states_now();
+        if (states != previous && ++visits[states] == cycle_visits)
+          return false;
+        previous = states;
       }
     return false;
   }

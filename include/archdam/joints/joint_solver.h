@@ -314,10 +314,13 @@ namespace archdam::joints
     /// Active-set iterations before projected Gauss-Seidel takes over, and
     /// allowed for each try of the states Gauss-Seidel reaches once they have
     /// held for polish_after sweeps. The reference case's static stage on
-    /// its production mesh needs 9 active-set iterations, and thousands of
-    /// sweeps when they are cut short (doc/theory/joints.md §6).
+    /// its former production mesh needs 9 active-set iterations, and
+    /// thousands of sweeps when they are cut short. An iteration that
+    /// comes back from other states to the same states (with the same
+    /// damage) for the cycle_visits-th time cycles, and hands over at once
+    /// (doc/theory/joints.md §6).
     static constexpr unsigned int active_set_limit = 100, active_set_polish = 10,
-                                  polish_after = 5;
+                                  polish_after = 5, cycle_visits = 3;
 
     /// @p out += @p factor C @p f.
     void
