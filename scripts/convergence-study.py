@@ -14,6 +14,9 @@ motion and time step on each:
   q2-229      Q2, 2 x 2 x 9 (the production mesh with more cells over the height)
   q2-2212     Q2, 2 x 2 x 12 (and twice the production mesh's cells over the height:
               the height direction's series 6, 9, 12 for the earthquake peaks)
+  q2-239      Q2, 2 x 3 x 9 (the case's mesh with three cells through the thickness)
+  q2-329      Q2, 3 x 2 x 9 (the case's mesh with three cells across each block;
+              both on the short rock, MESH-extent050 below, against q2-229 there)
   q2-2215     Q2, 2 x 2 x 15 and
   q2-2218     Q2, 2 x 2 x 18: the height series continued on the short rock
               (MESH-extent050 below)
@@ -85,6 +88,8 @@ MESHES = {
     "q2-236": (2, 2, 3, 6),
     "q2-326": (2, 3, 2, 6),
     "q2-229": (2, 2, 2, 9),
+    "q2-239": (2, 2, 3, 9),
+    "q2-329": (2, 3, 2, 9),
     "q2-2212": (2, 2, 2, 12),
     "q2-2215": (2, 2, 2, 15),
     "q2-2218": (2, 2, 2, 18),
@@ -99,6 +104,9 @@ RUNS = ["dynamic", "modal_massed", "modal_massless"]
 # the height series on the rock reaching half the dam's height (memory: the
 # 18-cell mesh on the whole rock would not fit), run as corrected_rock_beta
 SHORT_ROCK_SERIES = [f"{m}-extent050" for m in ["production", "q2-229", "q2-2212", "q2-2215", "q2-2218"]]
+# the two other directions on the case's mesh, on the same short rock: a third
+# cell through the thickness and across each block
+SHORT_ROCK_DIRECTIONS = ["q2-229-extent050", "q2-239-extent050", "q2-329-extent050"]
 
 
 def extent_settings(percent):
@@ -219,6 +227,7 @@ def main():
 
         convergence_report.report(args, MESHES, SERIES, HEIGHT_SERIES)
         convergence_report.short_rock_report(args, MESHES, SHORT_ROCK_SERIES)
+        convergence_report.directions_report(args, MESHES, SHORT_ROCK_DIRECTIONS)
 
 
 if __name__ == "__main__":

@@ -393,13 +393,10 @@ def draw_panels(path, keys, points):
     plt.close(fig)
 
 
-def short_rock_report(args, meshes, names):
-    """The height series of @p names (MESH-extentNN, coarsest first), each
-    run as corrected_rock_beta: the static state, the earthquake peaks over
-    the window and each joint's peak opening, each mesh against the finest,
-    the observed order and Richardson estimate of the three finest; appended
-    to convergence_tables.txt, the figure convergence_short_rock.png."""
-    window = float(args.window)
+def short_rock_rows(args, meshes, names, window):
+    """The runs corrected_rock_beta of @p names (MESH-extentNN) that reach
+    the window: (name, cells (degree, across, thickness, height), the static
+    state and the earthquake peaks, the run's facts, wall time, memory)."""
     run = "corrected_rock_beta"
     rows = []
     for m in names:
@@ -414,17 +411,83 @@ def short_rock_report(args, meshes, names):
             "static: largest joint opening [mm]": largest_opening(s, "static"),
         }
         wall, rss = time_txt(os.path.join(d, "time.txt"))
-        rows.append((m, meshes[m.split("-extent")[0]][3], {**static, **q}, info, wall, rss))
+        rows.append((m, meshes[m.split("-extent")[0]], {**static, **q}, info, wall, rss))
+    return rows
+
+
+def run_lines(rows):
+    lines = ["", "| mesh | cells | DOFs | node pairs | wall time [min], peak memory [GB] |", "|---|---|---|---|---|"]
+    for m, cells, q, info, wall, rss in rows:
+        lines.append(f"| {m} | {cells_name(cells)} | {info['DOFs']:,} | {info['node pairs']:,} | "
+                     f"{wall / 60:.1f}, {rss:.1f} |")
+    return lines
+
+
+def cells_name(cells):
+    """Q<degree> across x thickness x height"""
+    return f"Q{cells[0]} " + " x ".join(str(n) for n in cells[1:])
+
+
+def joint_lines(rows, against):
+    """Each joint's peak opening on @p rows, and the first against the
+    others (@p against) or each coarser against the last."""
+    key = "corrected: joints' peak openings [mm]"
+    have = [r for r in rows if key in r[3]]
+    if len(have) < 2:
+        return []
+    first, last = have[0][3][key], have[-1][3][key]
+    tail = (f"{cells_name(have[0][1])} against each [%]" if against
+            else f"each coarser mesh against {have[-1][1][3]} cells [%]")
+    lines = ["", "| joint | " + " | ".join(f"{cells_name(r[1])}" for r in have) + f" | {tail} |",
+             "|---" * (len(have) + 2) + "|"]
+    for j in range(13):
+        values = [r[3][key][j] for r in have]
+        errors = ([percent(first[j], v) for v in values[1:]] if against
+                  else [percent(v, last[j]) for v in values[:-1]])
+        lines.append(f"| {j} | " + " | ".join(f"{v:.2f}" for v in values) + " | " +
+                     ", ".join(f"{e:+.1f}" for e in errors) + " |")
+    return lines
+
+
+def write_lines(args, lines):
+    print("\n".join(lines))
+    with open(os.path.join(args.results, "convergence_tables.txt"), "a") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def directions_report(args, meshes, names):
+    """The first of @p names (the case's mesh on the short rock) against
+    each of the others (one direction refined): the static state, the
+    earthquake peaks over the window, each joint's peak opening."""
+    rows = short_rock_rows(args, meshes, names, float(args.window))
+    if len(rows) < 2 or rows[0][0] != names[0]:
+        return
+    lines = run_lines(rows)
+    lines += ["", "| quantity | " + " | ".join(cells_name(r[1]) for r in rows) + " | " +
+              f"{cells_name(rows[0][1])} against each [%] |", "|---" * (len(rows) + 2) + "|"]
+    for k in rows[0][2]:
+        values = [r[2].get(k) for r in rows]
+        if any(v is None for v in values):
+            continue
+        errors = "–" if "energy" in k else ", ".join(f"{percent(values[0], v):+.1f}" for v in values[1:])
+        lines.append(f"| {k} | " + " | ".join(f"{v:.4g}" for v in values) + f" | {errors} |")
+    write_lines(args, lines + joint_lines(rows, against=True))
+
+
+def short_rock_report(args, meshes, names):
+    """The height series of @p names (MESH-extentNN, coarsest first), each
+    run as corrected_rock_beta: the static state, the earthquake peaks over
+    the window and each joint's peak opening, each mesh against the finest,
+    the observed order and Richardson estimate of the three finest; appended
+    to convergence_tables.txt, the figure convergence_short_rock.png."""
+    rows = short_rock_rows(args, meshes, names, float(args.window))
     if len(rows) < 2:
         return
-    lines = ["", "| mesh | cells over the height | DOFs | node pairs | wall time [min], peak memory [GB] |",
-             "|---|---|---|---|---|"]
-    for m, nz, q, info, wall, rss in rows:
-        lines.append(f"| {m} | {nz} | {info['DOFs']:,} | {info['node pairs']:,} | {wall / 60:.1f}, {rss:.1f} |")
+    lines = run_lines(rows)
     finest = rows[-1]
     three = rows[-3:] if len(rows) >= 3 else None
-    header = ("| quantity | " + " | ".join(str(r[1]) for r in rows) + " | each coarser mesh against " +
-              f"{finest[1]} cells [%] | observed order ({', '.join(str(r[1]) for r in three or [])}) | "
+    header = ("| quantity | " + " | ".join(str(r[1][3]) for r in rows) + " | each coarser mesh against " +
+              f"{finest[1][3]} cells [%] | observed order ({', '.join(str(r[1][3]) for r in three or [])}) | "
               "Richardson estimate | each mesh against it [%] |")
     lines += ["", header, "|---" * (len(rows) + 5) + "|"]
     keys = list(finest[2])
@@ -439,25 +502,13 @@ def short_rock_report(args, meshes, names):
         errors = ", ".join(f"{percent(v, values[-1]):+.1f}" for v in values[:-1])
         order = estimate = against = "–"
         if three:
-            order, fe = richardson([r[2][k] for r in three], [1.0 / r[1] for r in three])
+            order, fe = richardson([r[2][k] for r in three], [1.0 / r[1][3] for r in three])
             if fe is not None:
                 estimate = f"{fe:.4g}"
                 against = ", ".join(f"{percent(v, fe):+.1f}" for v in values)
         lines.append(f"| {k} | {cells} | {errors} | {order} | {estimate} | {against} |")
-    key = "corrected: joints' peak openings [mm]"
-    have = [r for r in rows if key in r[3]]
-    if len(have) >= 2:
-        last = have[-1][3][key]
-        lines += ["", "| joint | " + " | ".join(f"{r[1]} cells" for r in have) +
-                  f" | each coarser mesh against {have[-1][1]} cells [%] |", "|---" * (len(have) + 2) + "|"]
-        for j in range(13):
-            values = [r[3][key][j] for r in have]
-            lines.append(f"| {j} | " + " | ".join(f"{v:.2f}" for v in values) + " | " +
-                         ", ".join(f"{percent(v, last[j]):+.1f}" for v in values[:-1]) + " |")
-    print("\n".join(lines))
-    with open(os.path.join(args.results, "convergence_tables.txt"), "a") as f:
-        f.write("\n".join(lines) + "\n")
+    write_lines(args, lines + joint_lines(rows, against=False))
 
     keys = [k for k in keys if "energy" not in k and all(k in r[2] for r in rows)]
     draw_panels(os.path.join(args.figures or args.results, "convergence_short_rock.png"), keys,
-                lambda k: [(r[3]["DOFs"], r[2][k], f"{r[1]} cells") for r in rows])
+                lambda k: [(r[3]["DOFs"], r[2][k], f"{r[1][3]} cells") for r in rows])
