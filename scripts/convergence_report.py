@@ -319,14 +319,8 @@ def report(args, meshes, series, height_series):
         have = [m for m in names if key in data[m][1]]
         if len(have) < 2:
             continue
-        last = data[have[-1]][1][key]
-        joints = ["| joint (peak opening, " + (prefix or "one solve: ") + "0-" + f"{window:g} s [mm]) | " +
-                  " | ".join(have) + " | each coarser mesh against " + have[-1] + " [%] |",
-                  "|---" * (len(have) + 2) + "|"]
-        for j in range(13):
-            values = [data[m][1][key][j] for m in have]
-            joints.append(f"| {j} | " + " | ".join(f"{v:.2f}" for v in values) + " | " +
-                          ", ".join(f"{percent(v, last[j]):+.1f}" for v in values[:-1]) + " |")
+        joints = joint_table("joint (peak opening, " + (prefix or "one solve: ") + f"0-{window:g} s [mm])",
+                             have, [data[m][1][key] for m in have], against_first=False)
         lines += [""] + joints
         print("\n".join(joints))
     open(os.path.join(args.results, "convergence_tables.txt"), "w").write("\n".join(lines) + "\n")
@@ -348,9 +342,7 @@ def report(args, meshes, series, height_series):
                 f"{percent(rdata[m][0][k], ref[k]):+.1f}" for m, h in rows if h != 45
             )
             lines.append(f"| {k} | {cells} | {diffs} |")
-        with open(os.path.join(args.results, "convergence_tables.txt"), "a") as f:
-            f.write("\n" + "\n".join(lines) + "\n")
-        print("\n".join(lines))
+        write_lines(args, [""] + lines)
 
     groups = {
         "static": [k for k in quantities if k.startswith("static")],
@@ -428,25 +420,29 @@ def cells_name(cells):
     return f"Q{cells[0]} " + " x ".join(str(n) for n in cells[1:])
 
 
-def joint_lines(rows, against):
-    """Each joint's peak opening on @p rows, and the first against the
-    others (@p against) or each coarser against the last."""
-    key = "corrected: joints' peak openings [mm]"
-    have = [r for r in rows if key in r[3]]
-    if len(have) < 2:
-        return []
-    first, last = have[0][3][key], have[-1][3][key]
-    tail = (f"{cells_name(have[0][1])} against each [%]" if against
-            else f"each coarser mesh against {have[-1][1][3]} cells [%]")
-    lines = ["", "| joint | " + " | ".join(f"{cells_name(r[1])}" for r in have) + f" | {tail} |",
-             "|---" * (len(have) + 2) + "|"]
+def joint_table(title, labels, openings, against_first):
+    """Each joint's peak opening [mm] (@p openings, one list of 13 per
+    mesh, in the order of @p labels), and the first mesh against each of
+    the others (@p against_first) or each coarser mesh against the last."""
+    first, last = openings[0], openings[-1]
+    tail = f"{labels[0]} against each [%]" if against_first else f"each coarser mesh against {labels[-1]} [%]"
+    lines = [f"| {title} | " + " | ".join(labels) + f" | {tail} |", "|---" * (len(labels) + 2) + "|"]
     for j in range(13):
-        values = [r[3][key][j] for r in have]
-        errors = ([percent(first[j], v) for v in values[1:]] if against
+        values = [o[j] for o in openings]
+        errors = ([percent(first[j], v) for v in values[1:]] if against_first
                   else [percent(v, last[j]) for v in values[:-1]])
         lines.append(f"| {j} | " + " | ".join(f"{v:.2f}" for v in values) + " | " +
                      ", ".join(f"{e:+.1f}" for e in errors) + " |")
     return lines
+
+
+def joint_lines(rows, against_first):
+    """joint_table of the short-rock runs @p rows that recorded each joint."""
+    key = "corrected: joints' peak openings [mm]"
+    have = [r for r in rows if key in r[3]]
+    if len(have) < 2:
+        return []
+    return [""] + joint_table("joint", [cells_name(r[1]) for r in have], [r[3][key] for r in have], against_first)
 
 
 def write_lines(args, lines):
@@ -471,7 +467,7 @@ def directions_report(args, meshes, names):
             continue
         errors = "–" if "energy" in k else ", ".join(f"{percent(values[0], v):+.1f}" for v in values[1:])
         lines.append(f"| {k} | " + " | ".join(f"{v:.4g}" for v in values) + f" | {errors} |")
-    write_lines(args, lines + joint_lines(rows, against=True))
+    write_lines(args, lines + joint_lines(rows, against_first=True))
 
 
 def short_rock_report(args, meshes, names):
@@ -507,7 +503,7 @@ def short_rock_report(args, meshes, names):
                 estimate = f"{fe:.4g}"
                 against = ", ".join(f"{percent(v, fe):+.1f}" for v in values)
         lines.append(f"| {k} | {cells} | {errors} | {order} | {estimate} | {against} |")
-    write_lines(args, lines + joint_lines(rows, against=False))
+    write_lines(args, lines + joint_lines(rows, against_first=False))
 
     keys = [k for k in keys if "energy" not in k and all(k in r[2] for r in rows)]
     draw_panels(os.path.join(args.figures or args.results, "convergence_short_rock.png"), keys,
