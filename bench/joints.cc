@@ -18,7 +18,8 @@
 // - corrected: the condensed mixed method with the position correction of
 //   the step impulse (Contraction joints/Position correction,
 //   doc/theory/joints.md §11: one more backward substitution in the steps
-//   that correct), against the condensed one without it; its Position
+//   that correct), against the condensed one without it (every case with
+//   the closure of these measurements, Closure = velocities); its Position
 //   tolerance is T if given (this case's offsets are micrometres: a small T
 //   makes it correct as often as the reference case does), else the default;
 // - neighbouring: the mixed method with the paper's sparse approximation of
@@ -88,7 +89,8 @@ namespace
         << " set Mixed method solves = "
         << (name == "condensed" || name == "corrected" ? "condensed on the pairs" :
                                                          "predictor and corrector")
-        << "\n set Position correction = " << (name == "corrected" ? "true" : "false") << "\n"
+        << "\n set Closure = velocities\n set Position correction = "
+        << (name == "corrected" ? "true" : "false") << "\n"
         << tolerance.str()
         << " set Friction coefficient = 0.7\n set Cohesion = 0\n set Tensile strength = 5e5\n"
         // The default penalty (1e8 x the largest diagonal entry) leaves the

@@ -169,13 +169,15 @@ def run_settings(what, end_time):
             "Damping/Rock/Mass proportional coefficient=0",
             "Damping/Rock/Stiffness proportional coefficient=0.0009362",
         ]
-        step_impulse_alone = ["Contraction joints/Position correction=false"]
+        # the closures of the runs recorded then (doc/theory/joints.md §11)
+        corrected = ["Contraction joints/Closure=velocities"]
+        step_impulse_alone = corrected + ["Contraction joints/Position correction=false"]
         if what == "dynamic_relaxed":
             return dynamic + relaxation + rock_like_dam + step_impulse_alone
         if what == "dynamic_rock_beta":
             return dynamic + relaxation + rock_beta + step_impulse_alone
         if what == "corrected_rock_beta":
-            return dynamic + relaxation + rock_beta
+            return dynamic + relaxation + rock_beta + corrected
         sys.exit(f"unknown run {what}")
     foundation = "massed" if what == "modal_massed" else "massless"
     return [

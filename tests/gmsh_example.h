@@ -4,7 +4,9 @@
 // mesh.
 #pragma once
 
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace archdam::testing::gmsh_example
 {
@@ -42,5 +44,48 @@ namespace archdam::testing::gmsh_example
   joint_node_pairs(const unsigned int p)
   {
     return (p * nx_dam + 1) * (p * (nz_wet + nz_dry) + 1) - (p * nx_dam + 1);
+  }
+  /// Two unit cubes side by side along @p axis, each its own dam block
+  /// (10, 11), as a Gmsh 2.2 file's text with 12 or 16 nodes: the 16-node
+  /// file does not connect them; @p gap > 0 moves the second one that far
+  /// away along the axis. Node tags 1, 3, 5, 7 lie on the first cube's face
+  /// at 0 along the axis.
+  inline std::string
+  two_cubes(const bool connected, const unsigned int gap = 0, const unsigned int axis = 0)
+  {
+    std::ostringstream s;
+    s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << (connected ? 12 : 16) << "\n";
+    unsigned int                           tag = 1;
+    std::vector<std::vector<unsigned int>> hex(2);
+    for (unsigned int c = 0; c < 2; ++c)
+      for (unsigned int k = 0; k < 2; ++k)
+        for (unsigned int j = 0; j < 2; ++j)
+          for (unsigned int i = 0; i < 2; ++i)
+            {
+              if (connected && c == 1 && i == 0)
+                {
+                  hex[c].push_back(hex[0][1 + 2 * j + 4 * k]); // the shared face's node
+                  continue;
+                }
+              // (along, j, k) turned cyclically onto (x, y, z): the same
+              // orientation for every axis
+              unsigned int x[3];
+              x[axis]           = c * (1 + gap) + i;
+              x[(axis + 1) % 3] = j;
+              x[(axis + 2) % 3] = k;
+              s << tag << ' ' << x[0] << ' ' << x[1] << ' ' << x[2] << "\n";
+              hex[c].push_back(tag++);
+            }
+    s << "$EndNodes\n$Elements\n2\n";
+    const unsigned int gmsh_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+    for (unsigned int c = 0; c < 2; ++c)
+      {
+        s << c + 1 << " 5 2 " << 10 + c << " 1";
+        for (const unsigned int v : gmsh_order)
+          s << ' ' << hex[c][v];
+        s << "\n";
+      }
+    s << "$EndElements\n";
+    return s.str();
   }
 } // namespace archdam::testing::gmsh_example

@@ -13,8 +13,9 @@
 //    integrated event by event with exact sub-steps of 1e-6 s.
 // Both schemes of the pair forces in time (Contraction joints/Contact in
 // time, doc/theory/joints.md §10) run every reference: the step impulse (the
-// default) with the average acceleration rule and the trapezoidal forces
-// with Beta1 = 0.6. The block settles under its weight for 0.05 s first (it
+// default) with the average acceleration rule, with its dissipative closure
+// (the default) and with the velocities closure (§11), and the trapezoidal
+// forces with Beta1 = 0.6. The block settles under its weight for 0.05 s first (it
 // has no support but the joint, so there is no static stage here), the
 // weight rising smoothly over 0.04 s so as not to set the stiff block
 // ringing (its own period is about 1 ms, and Beta1 = 1/2 does not damp it).
@@ -38,44 +39,6 @@ namespace
   constexpr double settle = 0.05; // s
   constexpr double ramp   = 0.04; // s: the weight's smooth rise
 
-  /// Rigid-block relative slip s(t) (block minus base) under a_g(t).
-  std::vector<double>
-  rigid_block(const std::function<double(double)> &ag, const double N, const double end,
-              const double out_dt)
-  {
-    const double        h = 1e-6;
-    double              s = 0., v = 0.;
-    std::vector<double> out{0.};
-    const unsigned int  n = std::lround(end / h), every = std::lround(out_dt / h);
-    for (unsigned int k = 0; k < n; ++k)
-      {
-        const double t = k * h, a = ag(t + 0.5 * h);
-        if (v == 0. && std::abs(a) <= N * g)
-          ; // stick
-        else
-          {
-            const double dir = v != 0. ? (v > 0 ? 1. : -1.) : (a > 0 ? -1. : 1.);
-            const double acc = -a - N * g * dir;
-            const double v1  = v + acc * h;
-            if (v != 0. && v1 * v < 0.)
-              {
-                // the relative velocity reaches zero inside the sub-step: stop there
-                const double tau = -v / acc;
-                s += v * tau + 0.5 * acc * tau * tau;
-                v = 0.;
-              }
-            else
-              {
-                s += v * h + 0.5 * acc * h * h;
-                v = v1;
-              }
-          }
-        if ((k + 1) % every == 0)
-          out.push_back(s);
-      }
-    return out;
-  }
-
   /// A contact solver and how its pair forces act in time, each with the
   /// Newmark rule it is used with (doc/user-guide.md, "Contraction joints"):
   /// the step impulse with the average acceleration rule, the trapezoidal
@@ -86,9 +49,12 @@ namespace
     std::string           name;
     joints::Solver        solver;
     joints::ContactInTime contact;
+    joints::Closure       closure = joints::Closure::dissipative;
   };
-  const Scheme step_impulse{"step impulse, Beta1 = 0.5", joints::Solver::mixed,
-                            joints::ContactInTime::step_impulse};
+  const Scheme step_impulse{"step impulse, dissipative closure, Beta1 = 0.5",
+                            joints::Solver::mixed, joints::ContactInTime::step_impulse};
+  const Scheme velocities{"step impulse, velocities closure, Beta1 = 0.5", joints::Solver::mixed,
+                          joints::ContactInTime::step_impulse, joints::Closure::velocities};
   const Scheme trapezoidal{"trapezoidal, Beta1 = 0.6", joints::Solver::mixed,
                            joints::ContactInTime::trapezoidal};
 
@@ -112,6 +78,7 @@ namespace
     jp.model                    = joints::Model::frictional_contact;
     jp.solver                   = scheme.solver;
     jp.contact_in_time          = scheme.contact;
+    jp.closure                  = scheme.closure;
     jp.law.friction_coefficient = mu;
     jp.law.cohesion = jp.law.residual_cohesion = c;
 
@@ -181,7 +148,7 @@ main(int argc, char **argv)
   // Rectangular pulse, friction alone and friction with cohesion.
   const double A = 0.5, t0 = 0.1, mu = 0.2, m = 2400., area = 1.;
   const auto   pulse = [&](const double t) { return t > 0 && t <= t0 + 1e-12 ? A * g : 0.; };
-  for (const Scheme &scheme : {step_impulse, trapezoidal})
+  for (const Scheme &scheme : {step_impulse, velocities, trapezoidal})
     for (const double c : {0., 0.1 * m * g / area})
       {
         const double N    = mu + c * area / (m * g);
@@ -195,16 +162,25 @@ main(int argc, char **argv)
 
   // Harmonic input: event-driven rigid-block reference at two time steps,
   // the error as max |slip - reference| / peak slip.
-  //  - Step impulse, Beta1 = 1/2: below 0.6 % at both steps (measured 0.47 %
-  //    and 0.39 %, and 0.31 % at dt / 4: it falls slowly, the stick/slip
-  //    transitions inside a step leave a residual of their own).
+  //  - Step impulse, Beta1 = 1/2, velocities closure: below 0.6 % at both
+  //    steps (measured 0.47 % and 0.39 %, and 0.31 % at dt / 4: it falls
+  //    slowly, the stick/slip transitions inside a step leave a residual of
+  //    their own).
+  //  - Step impulse, Beta1 = 1/2, dissipative closure (the default): below
+  //    1 % at both steps (measured 0.78 % and 0.72 %): a pair that sticks
+  //    holds its position, so in the step where the block stops and turns
+  //    the force that would hold it includes the reversal of its velocity,
+  //    and the block turns with an error of its velocity that does not fall
+  //    with the step at these steps (doc/theory/joints.md §11; a one-mass
+  //    model of the same rule gives 0.84 %, 0.70 %, 0.11 % and 0.13 % at 1,
+  //    0.5, 0.25 and 0.125 ms).
   //  - Trapezoidal forces, Beta1 = 0.6: first order, the error (Beta1 - 1/2)
   //    dt times the jumps of the acceleration at the stick/slip transitions:
   //    halving dt must halve the error (ratio >= 1.7 checked; first order
   //    gives 2), and at dt / 2 the error must be below 1.5 % of the peak slip.
   const double T  = 0.5, Ah = 0.4;
   const auto   harmonic = [&](const double t) { return Ah * g * std::sin(2 * M_PI * t / T); };
-  for (const Scheme &scheme : {step_impulse, trapezoidal})
+  for (const Scheme &scheme : {step_impulse, velocities, trapezoidal})
     {
       log << scheme.name << ", harmonic input A = " << Ah << ", T = " << T << " s, N = " << mu
           << ":" << std::endl;
@@ -212,7 +188,8 @@ main(int argc, char **argv)
       std::vector<double> error;
       for (const double step : {dt, dt / 2})
         {
-          const auto ref   = rigid_block(harmonic, mu, 1.0, step);
+          const auto ref   = testing::rigid_block([&](const double t) { return -harmonic(t); },
+                                                mu * g, 1.0, step);
           const auto mixed = fe_block(scheme, harmonic, mu, 0., 1.0, step);
           double     err   = 0.;
           for (unsigned int k = 0; k < ref.size(); ++k)
@@ -224,7 +201,8 @@ main(int argc, char **argv)
           if (impulse)
             testing::check_below("  max |slip - reference| / peak slip at dt = " +
                                    std::string(step == dt ? "1" : "0.5") + " ms",
-                                 error.back(), 0.006);
+                                 error.back(),
+                                 scheme.closure == joints::Closure::velocities ? 0.006 : 0.01);
         }
       if (!impulse)
         {

@@ -11,7 +11,10 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <cmath>
+#include <functional>
 #include <memory>
+#include <vector>
 
 namespace archdam::testing
 {
@@ -114,4 +117,43 @@ namespace archdam::testing
     np.beta2           = impulse ? 0.25 : 0.3025;
     return np;
   }
+  /// Rigid-block relative slip s(t) (block minus base) for the driving
+  /// acceleration @p drive(t) and the friction capacity @p capacity (as
+  /// accelerations), every @p out_dt: s'' = drive - capacity sign(s') while
+  /// it slides, s' = 0 while |drive| <= capacity, integrated event by event
+  /// with exact sub-steps of 1e-6 s (the joint tests' independent reference).
+  inline std::vector<double>
+  rigid_block(const std::function<double(double)> &drive, const double capacity,
+              const double end, const double out_dt)
+  {
+    const double        h = 1e-6;
+    double              s = 0., v = 0.;
+    std::vector<double> out{0.};
+    const unsigned int  n = std::lround(end / h), every = std::lround(out_dt / h);
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double a = drive(k * h + 0.5 * h);
+        if (v != 0. || std::abs(a) > capacity)
+          {
+            const double dir = v != 0. ? (v > 0 ? 1. : -1.) : (a > 0 ? 1. : -1.);
+            const double acc = a - capacity * dir;
+            const double v1  = v + acc * h;
+            if (v != 0. && v1 * v < 0.)
+              {
+                const double tau = -v / acc; // it stops inside the sub-step
+                s += v * tau + 0.5 * acc * tau * tau;
+                v = 0.;
+              }
+            else
+              {
+                s += v * h + 0.5 * acc * h * h;
+                v = v1;
+              }
+          }
+        if ((k + 1) % every == 0)
+          out.push_back(s);
+      }
+    return out;
+  }
+
 } // namespace archdam::testing

@@ -20,8 +20,9 @@
 //    not touch (no joint between them);
 //  - with frictional joints and the mixed method, a block held by its joint
 //    alone (the static stage would need K^-1, and so would the self-weight
-//    on the ungrouted cantilevers; accepted with the monolithic solver and
-//    the joints grouted before the self-weight);
+//    on the ungrouted cantilevers; accepted with the joints grouted before
+//    the self-weight and the monolithic solver, or the static stage by
+//    dynamic relaxation);
 //  - a physical surface inside the model (on a joint);
 //  - malformed files, each caught before deal.II's GridIn reads them (the
 //    fuzz target fuzz_gmsh_mesh found what GridIn does not check): a count
@@ -113,41 +114,6 @@ namespace
     log() << "* " << what << "\n  exit code " << code << "\n  " << err.str() << std::endl;
   }
 
-  /// Two unit cubes side by side in x, each its own dam block, with 12 or 16
-  /// nodes: the 16-node file does not connect them; @p gap > 0 moves the
-  /// second one that far away in x.
-  std::string
-  two_blocks(const bool connected, const unsigned int gap = 0)
-  {
-    std::ostringstream s;
-    s << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" << (connected ? 12 : 16) << "\n";
-    unsigned int tag = 1;
-    std::vector<std::vector<unsigned int>> hex(2);
-    for (unsigned int c = 0; c < 2; ++c)
-      for (unsigned int k = 0; k < 2; ++k)
-        for (unsigned int j = 0; j < 2; ++j)
-          for (unsigned int i = 0; i < 2; ++i)
-            {
-              if (connected && c == 1 && i == 0)
-                {
-                  hex[c].push_back(hex[0][1 + 2 * j + 4 * k]); // the shared face's node
-                  continue;
-                }
-              s << tag << ' ' << c * (1 + gap) + i << ' ' << j << ' ' << k << "\n";
-              hex[c].push_back(tag++);
-            }
-    s << "$EndNodes\n$Elements\n2\n";
-    const unsigned int gmsh_order[8] = {0, 1, 3, 2, 4, 5, 7, 6};
-    for (unsigned int c = 0; c < 2; ++c)
-      {
-        s << c + 1 << " 5 2 " << 10 + c << " 1";
-        for (const unsigned int v : gmsh_order)
-          s << ' ' << hex[c][v];
-        s << "\n";
-      }
-    s << "$EndElements\n";
-    return s.str();
-  }
 } // namespace
 
 int
@@ -239,14 +205,14 @@ main(int argc, char **argv)
         }));
   run("a rock side face in physical surface 7 (the splitter's id)", "reserved_id.msh");
 
-  write("connected_blocks.msh", two_blocks(true));
+  write("connected_blocks.msh", ex::two_cubes(true));
   run("two dam blocks sharing their joint's nodes (accepted)", "connected_blocks.msh");
   {
     // block 0 fixed on its far face x = 0 (nodes 1 3 7 5, physical surface
     // 1), block 1 held by the joint alone: the static stage of the mixed
     // method has no K^-1 for it, nor has the self-weight on the ungrouted
     // cantilevers; the monolithic solver holds it, the joints grouted first
-    std::string text = two_blocks(true);
+    std::string text = ex::two_cubes(true);
     text.replace(text.find("$Elements\n2\n"), 12, "$Elements\n3\n");
     text.replace(text.find("$EndElements"), 0, "3 3 2 1 1 1 3 7 5\n");
     write("hanging_block.msh", text);
@@ -256,13 +222,15 @@ main(int argc, char **argv)
         joints + "mixed\nend\n");
     run("the same with the monolithic solver (accepted)", "hanging_block.msh",
         joints + "monolithic\n  set Contact in time = trapezoidal\nend\n");
+    run("the same with the mixed method and the static stage by dynamic relaxation (accepted)",
+        "hanging_block.msh", joints + "mixed\n  set Static solution = dynamic relaxation\nend\n");
     run("the same with the joints grouted after the self-weight", "hanging_block.msh",
         joints + "monolithic\n  set Contact in time = trapezoidal\n"
                  "  set Grouting = after self-weight\nend\n");
   }
-  write("separate_blocks.msh", two_blocks(false));
+  write("separate_blocks.msh", ex::two_cubes(false));
   run("two dam blocks meshed separately: joint faces without a partner", "separate_blocks.msh");
-  write("blocks_apart.msh", two_blocks(false, 1));
+  write("blocks_apart.msh", ex::two_cubes(false, 1));
   run("dam blocks 10 and 11 that do not touch (no joint between them)", "blocks_apart.msh");
   // The example with the middle block's volume dropped (a Gmsh volume
   // without a physical group is not saved): a hole between blocks 10 and 12,
@@ -274,7 +242,7 @@ main(int argc, char **argv)
       "middle_block_missing.msh");
   {
     // a quadrilateral on the joint between the two connected blocks
-    std::string text = two_blocks(true);
+    std::string text = ex::two_cubes(true);
     text.replace(text.find("$Elements\n2\n"), 12, "$Elements\n3\n3 3 2 100 1 2 4 8 6\n");
     write("joint_surface.msh", text);
     run("a physical surface (100) on the joint, inside the model", "joint_surface.msh");
@@ -330,7 +298,7 @@ main(int argc, char **argv)
     // a third hexahedron on the two connected blocks (nodes 1-8 block 0,
     // 9-12 block 1's far side; the joint face is 2 4 6 8): block 0 again,
     // then block 1 again listed from the joint face (its bottom) up
-    std::string blocks = two_blocks(true);
+    std::string blocks = ex::two_cubes(true);
     blocks.replace(blocks.find("$Elements\n2\n"), 12, "$Elements\n3\n");
     const auto with = [&](const std::string &third) {
       std::string text = blocks;

@@ -14,8 +14,9 @@
 // own numbers; the dynamic peaks again when the case changed to the joints'
 // step impulse with the average acceleration rule, again with its
 // position correction, again when the rock lost its mass-proportional
-// damping, and the static values again when the case's static stage became
-// a dynamic relaxation); the physics behind each is verified by the tests named in
+// damping, the static values again when the case's static stage became
+// a dynamic relaxation, and the dynamic peaks again when the joints' closure
+// became dissipative: s1 at C -2.7 %, joint 6 -0.5 %, joint 3 -0.8 %); the physics behind each is verified by the tests named in
 // doc/verification.md. What it catches is an unnoticed change of the case's
 // results: a parameter of the case file, a default, or a module whose own
 // tests still pass. Tolerances: the mesh and pair counts exactly; the static
@@ -103,11 +104,11 @@ main(int argc, char **argv)
   check_stored("static crest u_x [m]", number("static|crest.ux [m]"), 0.005654477068, 1e-6);
   check_stored("static crest u_z [m]", number("static|crest.uz [m]"), -0.01466903057, 1e-6);
   check_stored("peak crest u_x [m]", number("peaks|crest.ux [m]|value"), -0.05662143812, 1e-3);
-  check_stored("peak C major principal stress [Pa]", number("peaks|C.s1 [Pa]|value"), 585476.4446, 1e-3);
+  check_stored("peak C major principal stress [Pa]", number("peaks|C.s1 [Pa]|value"), 569549.0187, 1e-3);
   check_stored("peak opening of the crown joint 6 [m]",
-               number("dynamic|joints|joint 6|peak opening [m]"), 0.004133634263, 1e-3);
+               number("dynamic|joints|joint 6|peak opening [m]"), 0.004111957945, 1e-3);
   check_stored("peak opening of joint 3 [m]", number("dynamic|joints|joint 3|peak opening [m]"),
-               0.002844915605, 1e-3);
+               0.002821180349, 1e-3);
 
   const auto &names = sim.recorder<archdam::output::JointOutput>()->columns();
   const auto  a     = std::find(names.begin(), names.end(), "A.opening [m]") - names.begin();

@@ -16,9 +16,10 @@ namespace archdam::analysis
   {
     const double magnitudes = std::abs(kinetic) + std::abs(strain) + std::abs(damping) +
                               std::abs(radiated) + std::abs(contact) + std::abs(water) +
-                              std::abs(water_radiated) + std::abs(algorithmic);
+                              std::abs(water_radiated) + std::abs(algorithmic) +
+                              std::abs(correction);
     const double scale = std::max(std::abs(input), magnitudes);
-    return scale > 0. ? std::abs(input - sum()) / scale : 0.;
+    return scale > 0. ? std::abs(input + correction - sum()) / scale : 0.;
   }
 
   /**
@@ -147,7 +148,7 @@ namespace archdam::analysis
                       &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
                       &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch,
-                      &a_prev, &inertia_prev, &mean, &jump, &solid_part})
+                      &a_prev, &inertia_prev, &mean, &jump, &solid_part, &correction_residual})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -277,6 +278,7 @@ namespace archdam::analysis
         free_part(s.a, a_prev);
         full_product(*m.mass, Operator::mass, a_prev, inertia_prev);
       }
+    correction_residual = 0.;
     p_prev  = 0.;
     impulse = 0.;
     if (has_water)
@@ -326,6 +328,31 @@ namespace archdam::analysis
     du = tmp;
     du -= u_prev;
     u_prev = tmp;
+    // The position correction (doc/theory/joints.md §11) moves the
+    // displacements by du_c after the step, without a force: its term is
+    // the strain energy (with the static loads' potential, as terms()
+    // measures it) that du_c adds, and the work of the out-of-balance force
+    // K du_c it leaves at the step's end over the next step (the next
+    // step's trapezoidal rule takes half of it); every path term below
+    // works on the step's own increment.
+    const std::vector<double> *corrected_w = nullptr;
+    if (joints && !joints->last_correction().dw.empty())
+      {
+        corrected_w = &joints->last_correction().dw;
+        free_part(joints->last_correction().du, tmp);
+        du -= tmp;
+      }
+    sums.correction += 0.5 * (du * correction_residual);
+    correction_residual = 0.;
+    if (corrected_w)
+      {
+        full_product(*m.stiffness, Operator::stiffness, tmp, correction_residual);
+        Vector w(u_prev);
+        w -= u_static;
+        sums.correction += correction_residual * w - 0.5 * (correction_residual * tmp);
+        for (unsigned int k = 0; k < f_static.size(); ++k)
+          sums.correction -= f_static[k] * (*corrected_w)[k];
+      }
     if (dissipative())
       {
         tmp = v_prev; // v_n
@@ -421,8 +448,8 @@ namespace archdam::analysis
         // trapezoidal forces (g = f).
         for (unsigned int k = 0; k < f_prev.size(); ++k)
           {
-            const double work_k =
-              0.5 * (joints->pair_load[k] + f_prev[k]) * (joints->w[k] - w_prev[k]);
+            const double dw_k = joints->w[k] - w_prev[k] - (corrected_w ? (*corrected_w)[k] : 0.);
+            const double work_k = 0.5 * (joints->pair_load[k] + f_prev[k]) * dw_k;
             sums.contact += work_k;
             if (k % dim == 0) // xi, the normal of the pair's frame
               sums.contact_normal += work_k;
@@ -512,6 +539,8 @@ namespace archdam::analysis
       }
     if (dissipative())
       summary.set(s + "algorithmic dissipation [J]", e.algorithmic);
+    if (e.correction != 0.)
+      summary.set(s + "position correction's energy [J]", e.correction);
     summary.set(s + "balance error", e.balance_error());
     if (m.prescribed)
       summary.set(s + "note", "the input work is the net work of the prescribed outer "
@@ -546,6 +575,8 @@ namespace archdam::analysis
       out << " + water " << e.water << " + water radiated " << e.water_radiated;
     if (dissipative())
       out << " + algorithmic " << e.algorithmic;
+    if (e.correction != 0.)
+      out << " - position correction " << e.correction;
     // Round-off differs between runs on different numbers of processes: a
     // closed balance is printed as such.
     const double error = e.balance_error();
@@ -561,7 +592,7 @@ namespace archdam::analysis
   {
     for (const Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                             &boundary_prev, &boundary_static, &free_field_prev,
-                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev})
+                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev, &correction_residual})
       binary::write(out, *v);
     binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }
@@ -571,7 +602,7 @@ namespace archdam::analysis
   {
     for (Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                       &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
-                      &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev})
+                      &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev, &correction_residual})
       binary::read(in, *v);
     binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }

@@ -30,9 +30,12 @@ namespace archdam::analysis
   void
   Model::check_static_support(const Parameters &p, const Triangulation<dim> &model)
   {
-    // The static stage needs K^{-1} for the mixed method and for the
-    // self-weight on the ungrouted cantilevers (doc/theory/joints.md §8).
-    const bool mixed    = p.joints.solver == joints::Solver::mixed;
+    // The static stage needs K^{-1} for the mixed method's one solve and for
+    // the self-weight on the ungrouted cantilevers (doc/theory/joints.md §8);
+    // the dynamic relaxation of the grouted dam steps with the mass, which
+    // holds a block on its joints.
+    const bool mixed = p.joints.solver == joints::Solver::mixed &&
+                       p.joints.static_solution == joints::StaticSolution::one_solve;
     const bool ungrouted = p.joints.grouting == joints::Grouting::after_self_weight;
     if (!p.joints.frictional() || !(mixed || ungrouted) || !p.analysis.runs("static"))
       return;
@@ -47,13 +50,16 @@ namespace archdam::analysis
       (blocks.size() > 1 ? " rest" : " rests") +
       " on joints alone: no part of " + (blocks.size() > 1 ? "them" : "it") +
       " is tied to the rock or to the model's outer boundary (ids 1, 2). " +
-      (mixed ? "The mixed method solves the static stage with K" :
-               "With Contraction joints/Grouting = after self-weight the static stage first "
-               "solves the self-weight on the ungrouted blocks with K") +
+      (ungrouted ? "With Contraction joints/Grouting = after self-weight the static stage "
+                   "first solves the self-weight on the ungrouted blocks with K" :
+                   "The mixed method's one solve (Static solution = one solve) solves the "
+                   "static stage with K") +
       ", which has no inverse for such a block (doc/theory/joints.md §8). Use Contraction "
-      "joints/Solver = monolithic with Grouting = before self-weight (the default) and "
-      "Contact in time = trapezoidal, whose penalty springs hold the block on its joints, or "
-      "tie the block to the rock.");
+      "joints/Static solution = dynamic relaxation with Grouting = before self-weight (the "
+      "default): the static load comes on in a damped transient with the mass, which holds "
+      "the block on its joints; or Solver = monolithic with Grouting = before self-weight and "
+      "Contact in time = trapezoidal, whose penalty springs hold it; or tie the block to the "
+      "rock.");
   }
 
   Model::Model(const Parameters &p, const MPI_Comm comm, const ConditionalOStream &screen,

@@ -59,16 +59,29 @@ namespace archdam::joints
                   "step cannot create energy at the joints, and persistent contact "
                   "does not chatter; it needs the mixed solver, and with it use the "
                   "average acceleration rule (Beta1 = 0.5, Beta2 = 0.25).");
+    add_selection(prm, "Closure", closure, closure_names(),
+                  "With Contact in time = step impulse: what a closed pair holds in a "
+                  "dynamic step (doc/theory/joints.md §10-§11). dissipative (the default) "
+                  "= a closed pair holds its relative velocity at zero at the step's end "
+                  "as far as it does not move apart while pressed, a sticking pair holds "
+                  "its position and a slipping pair slips along its step's increment: the "
+                  "joints' work in every step is zero or a loss, so no step creates energy "
+                  "at the joints, damped or not; velocities = the closed pairs hold their "
+                  "relative velocity at the step's end at zero in all three directions "
+                  "(the scheme before 2026-12-02: on an undamped model a pair can do work "
+                  "against its motion at the start of a step, and a block hops). Either "
+                  "way a pair that closes in a step penetrates by up to dt/2 times its "
+                  "approach velocity, which Position correction removes.");
     prm.add_parameter("Position correction", position_correction,
                       "With Contact in time = step impulse: after every dynamic step, the "
-                      "closed pairs that penetrate or stand apart (the step impulse holds "
-                      "their velocity, not their position: a pair that closes in a step "
-                      "penetrates by up to dt/2 times its approach velocity) are moved "
-                      "back to touching by a correction of the displacements alone, the "
-                      "velocities kept (doc/theory/joints.md §11). It costs one more "
-                      "backward substitution in the steps that correct. With the "
-                      "trapezoidal forces there is nothing to correct: they hold the "
-                      "closed pairs at their positions themselves.");
+                      "closed pairs that penetrate or stand apart by more than Position "
+                      "tolerance are moved back to touching by a correction of the "
+                      "displacements alone, the velocities kept (doc/theory/joints.md §11). "
+                      "It costs one more backward substitution in the steps that correct. "
+                      "No force does its work: the energy balance reports it as the "
+                      "position correction's energy. With the trapezoidal forces there is "
+                      "nothing to correct: they hold the closed pairs at their positions "
+                      "themselves.");
     prm.add_parameter("Position tolerance", position_tolerance,
                       "With Position correction: a step corrects when a closed pair stands "
                       "apart or penetrates, or an open pair penetrates, by more than this "

@@ -164,10 +164,16 @@ namespace archdam::joints
   }
 
   void
-  JointSolver::correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s) const
+  JointSolver::correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s)
   {
-    if (!correction_force.empty())
-      newmark.correct_displacement(corrected_displacement, s);
+    if (correction_force.empty())
+      {
+        moved.dw.clear();
+        return;
+      }
+    moved.du = s.u;
+    newmark.correct_displacement(corrected_displacement, s);
+    moved.du.sadd(-1., 1., s.u);
   }
 
   void
@@ -189,6 +195,18 @@ namespace archdam::joints
     else
       {
         target = velocity_target;
+        if (p.closure == Closure::dissipative)
+          // doc/theory/joints.md §11: a closed pair does not move apart in
+          // the step (its normal target at most its gap at the step's
+          // start), a sticking pair holds its tangential position and a
+          // slipping pair slips along its step's increment, so that the
+          // joints' work f . (w - w_n) is zero or a loss.
+          for (unsigned int i = 0; i < pairs.size(); ++i)
+            {
+              target[dim * i] = std::min(w_committed[dim * i], target[dim * i]);
+              for (const unsigned int k : {1u, 2u})
+                target[dim * i + k] = w_committed[dim * i + k];
+            }
         may_close.resize(pairs.size());
         for (unsigned int i = 0; i < pairs.size(); ++i)
           may_close[i] = state[i] != PairState::separation || gap(i) <= 0.;

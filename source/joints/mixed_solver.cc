@@ -644,6 +644,7 @@ namespace archdam::joints
       return;
     for (unsigned int j = 0; j < m; ++j)
       w[j] += dw[j];
+    moved.dw = dw;
     ++corrections;
     for (const unsigned int i : P)
       largest_correction = std::max(largest_correction, std::abs(dw[dim * i]));

@@ -56,6 +56,12 @@ namespace archdam::analysis
     /// acceleration rule, and the energy Beta1 > 1/2 takes out of the high
     /// frequencies otherwise.
     double algorithmic = 0.;
+    /// The energy the joints' position correction put into the model
+    /// (Contraction joints/Position correction, doc/theory/joints.md §11): the change of the strain energy (with the
+    /// static loads' potential) that the displacements it moved hold, which
+    /// no force of the model did; the work of the other terms is taken
+    /// without those displacements. Zero without the correction.
+    double correction = 0.;
 
     /// What the model holds or lost: everything but the input.
     double
@@ -64,8 +70,8 @@ namespace archdam::analysis
       return kinetic + strain + damping + radiated + contact + water + water_radiated +
              algorithmic;
     }
-    /// |input - sum| / max(|input|, sum of the magnitudes of the terms): what
-    /// no term accounts for.
+    /// |input + correction - sum| / max(|input|, sum of the magnitudes of
+    /// the terms): what no term accounts for.
     double
     balance_error() const;
 
@@ -231,6 +237,10 @@ namespace archdam::analysis
     /// The acceleration after the last step and M times it (algorithmic
     /// dissipation); scratch for its means and jumps.
     Vector a_prev, inertia_prev, mean, jump;
+    /// K du_c of the last step's position correction (zero when it made
+    /// none): the out-of-balance force it leaves at the step's end, whose
+    /// work over the next step is the correction's too.
+    Vector correction_residual;
     dealii::Tensor<1, dim> ag_prev, vg;
     std::vector<double>    f_static, w_static, f_prev, w_prev;
     double                 t_prev = 0.;

@@ -114,7 +114,7 @@ namespace archdam::joints
   enum class ContactInTime
   {
     trapezoidal, ///< the forces at the step's ends, averaged by the Newmark rule; positions held
-    step_impulse ///< one force over the whole step; closed pairs hold their relative velocity
+    step_impulse ///< one force over the whole step; closed pairs as Closure says
   };
 
   /// The names of ContactInTime in the case file.
@@ -123,6 +123,23 @@ namespace archdam::joints
   {
     static const SelectionNames<ContactInTime> names{
       {"trapezoidal", ContactInTime::trapezoidal}, {"step impulse", ContactInTime::step_impulse}};
+    return names;
+  }
+
+  /// `Contraction joints/Closure`: what a closed pair holds in a step with
+  /// the step impulse (doc/theory/joints.md §10-§11).
+  enum class Closure
+  {
+    dissipative, ///< velocities, no motion apart while closed, tangential positions: work >= 0
+    velocities   ///< the relative velocity at the step's end at zero in all three directions
+  };
+
+  /// The names of Closure in the case file.
+  inline const SelectionNames<Closure> &
+  closure_names()
+  {
+    static const SelectionNames<Closure> names{{"dissipative", Closure::dissipative},
+                                               {"velocities", Closure::velocities}};
     return names;
   }
 
@@ -197,6 +214,9 @@ namespace archdam::joints
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     Law           strength_law = Law::mohr_coulomb;
     ContactInTime contact_in_time = ContactInTime::step_impulse;
+    /// With the step impulse: what a closed pair holds in a step
+    /// (doc/theory/joints.md §10-§11).
+    Closure closure = Closure::dissipative;
     /// With the step impulse: after each dynamic step, move the closed
     /// pairs that do not touch back to touching by a correction of the
     /// displacements alone (doc/theory/joints.md §11). The trapezoidal

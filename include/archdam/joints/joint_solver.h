@@ -122,7 +122,20 @@ namespace archdam::joints
      * step needed none.
      */
     void
-    correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s) const;
+    correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s);
+    /// What the last step's position correction moved (dw empty when it
+    /// made none): the displacements and the pairs' relative displacements, for the energy balance's term of its own
+    /// (analysis/energy_balance.h, EnergyTerms::correction).
+    struct PositionCorrection
+    {
+      Vector              du;
+      std::vector<double> dw;
+    };
+    const PositionCorrection &
+    last_correction() const
+    {
+      return moved;
+    }
     /// The steps that made a position correction, and the largest change of
     /// a pair's normal relative displacement one of them made [m] (this
     /// solver's run, as the time below; not kept in a checkpoint).
@@ -201,6 +214,8 @@ namespace archdam::joints
     /// solve() finds with them.
     std::vector<double> correction_force;
     Vector              corrected_displacement;
+    /// What correct_position() moved in the last step.
+    PositionCorrection moved;
 
     /// Pair i's strength from the joint law at its history.
     PairStrength
