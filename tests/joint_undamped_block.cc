@@ -339,10 +339,11 @@ main(int argc, char **argv)
   // dense algebra, not the results: every case at 0.5 ms with one and with
   // two. On the flat joint they agree to 1e-8 of the slip (measured 3e-15
   // and 6e-12); on the slope the undamped block's stick and slip of single
-  // pairs amplifies the round-off to 3e-6 of the slip (a pair deciding
-  // within the force tolerance band one step apart), bounded here by 1e-5.
+  // pairs amplify the round-off to 3e-6 of the slip (measured; where, is
+  // not known yet), bounded here by 1e-5.
   using SetThreads       = void (*)(int);
-  const auto set_threads = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  const auto set_threads =
+    reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
   log << "every case at 0.5 ms with one and two BLAS threads:" << std::endl;
   for (unsigned int k = 0; k < cases.size(); ++k)
     {

@@ -148,7 +148,8 @@ namespace archdam::analysis
                       &u_prev, &v_prev, &damping_prev, &p_prev, &impulse, &boundary_prev,
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
                       &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch,
-                      &a_prev, &inertia_prev, &mean, &jump, &solid_part, &correction_residual})
+                      &a_prev, &inertia_prev, &mean, &jump, &solid_part,
+                      &correction_residual})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -592,7 +593,8 @@ namespace archdam::analysis
   {
     for (const Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                             &boundary_prev, &boundary_static, &free_field_prev,
-                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev, &correction_residual})
+                            &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev,
+                            &inertia_prev, &correction_residual})
       binary::write(out, *v);
     binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }
@@ -602,7 +604,8 @@ namespace archdam::analysis
   {
     for (Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                       &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
-                      &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev, &correction_residual})
+                      &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev,
+                      &correction_residual})
       binary::read(in, *v);
     binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
   }

@@ -57,10 +57,11 @@ namespace archdam::analysis
     /// frequencies otherwise.
     double algorithmic = 0.;
     /// The energy the joints' position correction put into the model
-    /// (Contraction joints/Position correction, doc/theory/joints.md §11): the change of the strain energy (with the
-    /// static loads' potential) that the displacements it moved hold, which
-    /// no force of the model did; the work of the other terms is taken
-    /// without those displacements. Zero without the correction.
+    /// (Contraction joints/Position correction, doc/theory/joints.md §11):
+    /// the change of the strain energy (with the static loads' potential)
+    /// that the displacements it moved hold, which no force of the model
+    /// did; the work of the other terms is taken without those
+    /// displacements. Zero without the correction.
     double correction = 0.;
 
     /// What the model holds or lost: everything but the input.

@@ -130,7 +130,7 @@ namespace archdam::joints
   /// the step impulse (doc/theory/joints.md §10-§11).
   enum class Closure
   {
-    dissipative, ///< velocities, no motion apart while closed, tangential positions: work >= 0
+    dissipative, ///< velocities, no motion apart while pressed, tangential positions held
     velocities   ///< the relative velocity at the step's end at zero in all three directions
   };
 

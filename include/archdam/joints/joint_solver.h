@@ -124,8 +124,9 @@ namespace archdam::joints
     void
     correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s);
     /// What the last step's position correction moved (dw empty when it
-    /// made none): the displacements and the pairs' relative displacements, for the energy balance's term of its own
-    /// (analysis/energy_balance.h, EnergyTerms::correction).
+    /// made none): the displacements and the pairs' relative displacements,
+    /// for the energy balance's term of its own (analysis/energy_balance.h,
+    /// EnergyTerms::correction).
     struct PositionCorrection
     {
       Vector              du;
