@@ -13,7 +13,7 @@ writes four PNG files:
 
 Usage:
   /usr/bin/python3 scripts/plot_arch_dam.py \
-      build/tests/arch_dam_default.release/arch_dam_model.txt doc/figures
+      build/tests/arch_dam_default/arch_dam_model.txt doc/figures
 """
 import sys
 import os

@@ -10,7 +10,7 @@ seconds=$2
 build=${3:-$root/build/fuzz}
 cmake -S "$root/tests/fuzz" -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug > "$build.log" 2>&1 \
   || { cat "$build.log"; exit 1; }
-cmake --build "$build" --target "fuzz_$target" > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
+cmake --build "$build" --target "fuzz_$target" -j"$(nproc)" > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
 # The corpus grows in a scratch copy; the committed seeds stay as they are.
 corpus="$build/corpus/$target"
 mkdir -p "$corpus" "$build/findings"

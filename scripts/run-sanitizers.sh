@@ -26,7 +26,7 @@ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release \
 targets=(archdam)
 for source in "$root"/tests/*.cc; do
   name=$(basename "$source" .cc)
-  [[ $name =~ ^($tests)$ ]] && targets+=("tests.$name.release")
+  [[ $name =~ ^($tests)$ ]] && targets+=("tests.$name")
 done
 cmake --build "$build" -j"$jobs" "${targets[@]/#/--target=}" >> "$log" 2>&1 \
   || { tail -40 "$log"; exit 1; }
@@ -43,6 +43,6 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 start=$(date +%s)
 cd "$build"
 status=0
-ctest -j"$jobs" -R "^tests/($tests)\.release$" --output-on-failure --timeout 3000 || status=$?
+ctest -j"$jobs" -R "^tests/($tests)$" --output-on-failure --timeout 3000 || status=$?
 echo "tests: $(( $(date +%s) - start )) s"
 exit $status
