@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   cmake make g++ perl             # build; perl: the tests' output normalization
+  lld                             # LLVM's linker: links the test executables faster than gold
   libdeal.ii-dev                  # deal.II 9.4 with PETSc/MUMPS, Trilinos, HDF5, MPI
   libmumps-dev                    # MUMPS directly: the factorization condensed on the joints
   libscotch-dev                   # SCOTCH's nested dissection, an order of that factorization

@@ -83,6 +83,11 @@ main(int argc, char **argv)
                [](auto &p) { p.abutment_thickening_base = 3.5; });
   expect_error("one layer cannot hold the water level (Cells over height = 1)",
                [](auto &p) { p.cells_over_height = 1; });
+  expect_error("a low water level needs more layers (Water level = 40 m, Cells over height = 4)",
+               [](auto &p) {
+                 p.water_level       = 40;
+                 p.cells_over_height = 4;
+               });
   expect_error("reservoir shorter than the dam's overhang (Reservoir length = 0.05)",
                [](auto &p) { p.reservoir_length = 0.05; });
   expect_error("no blocks (Number of blocks = 0)", [](auto &p) { p.n_blocks = 0; });

@@ -337,6 +337,21 @@ namespace
     here.components[1].units = RecordUnits::m_per_s2;
     here.components[2].file  = "gm_sine.txt";
     here.components[2].scale = 2.;
+    // the column (up to 150) read as g and doubled is near 300 g: refused with the
+    // default Largest plausible PGA (5 g) as a units error, read without it
+    bool refused = false;
+    try
+      {
+        const GroundMotion limited(here, "");
+      }
+    catch (const archdam::InputError &e)
+      {
+        refused = std::string(e.what()).find(" g, above Ground motion/Largest plausible PGA = 5 g") !=
+                  std::string::npos;
+      }
+    report("a component of about 300 g refused with the default Largest plausible PGA (5 g)",
+           refused);
+    here.largest_pga = 0.;
     const GroundMotion from_cwd(here, "");
     const auto         a_here = from_cwd.acceleration(t_sine[3]);
     report("relative name with base_directory \"\": working directory",

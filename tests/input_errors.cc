@@ -184,6 +184,9 @@ main(int argc, char **argv)
   run_archdam("includes relative to each including file (runs)",
               {"cases/variants/variant.prm"});
   run_archdam("an entry set twice in one section (runs, with a warning)", {"twice.prm"});
+  write_input("byte_order_mark.prm", "\xEF\xBB\xBF" + good_case.substr(good_case.find("subsection")));
+  run_archdam("a case file that begins with a UTF-8 byte-order mark (runs)",
+              {"byte_order_mark.prm"});
 
   // Values that are numbers but cannot be meant
   run_set("an end time of 1e9 s", "Time integration/End time=1e9");
@@ -211,6 +214,22 @@ main(int argc, char **argv)
   // Ground motion
   run_set("a record sample beyond the range of double in m/s^2",
           "Ground motion/Component x/File=huge.AT2");
+  write_input("short.csv", "0, 0.1\n0.02, 0.2\n");
+  write_input("in_cm.csv", "0, 0\n0.01, 275\n0.02, -130\n0.03, 0\n");
+  // The good case shaken in x by the two-column record @p file in @p units.
+  const auto with_record = [](const std::string &file, const std::string &units,
+                              std::vector<std::string> more) {
+    std::vector<std::string> args{"good.prm", "--set", "Ground motion/Component x/File=" + file,
+                                  "--set", "Ground motion/Component x/Format=two-column",
+                                  "--set", "Ground motion/Component x/Units=" + units};
+    args.insert(args.end(), more.begin(), more.end());
+    return args;
+  };
+  run_archdam("a record in cm/s^2 read as g (PGA 275 g)", with_record("in_cm.csv", "g", {}));
+  run_archdam("a time step not shorter than the ground motion (0.05 s on a record of 0.02 s)",
+              with_record("short.csv", "m/s^2",
+                          {"--set", "Time integration/Time step=0.05", "--set",
+                           "Time integration/End time=0.1"}));
 
   // Contraction joints
   run_set("a negative friction coefficient", "Contraction joints/Friction coefficient=-0.5");
@@ -229,6 +248,13 @@ main(int argc, char **argv)
              "Contraction joints/Per joint=0: Cohesion = high");
   run_joints("Per joint with a negative friction coefficient",
              "Contraction joints/Per joint=0: Friction coefficient = -0.2");
+  run_joints("Per joint with an infinite cohesion", "Contraction joints/Per joint=0: Cohesion = inf");
+  run_joints("Per joint with a hexadecimal value",
+             "Contraction joints/Per joint=0: Tensile strength = 0x10");
+  run_joints("Per joint with a hexadecimal joint number",
+             "Contraction joints/Per joint=0x0: Cohesion = 1e5");
+  run_joints("Per joint with a joint given twice",
+             "Contraction joints/Per joint=0: Cohesion = 1e5; 0: Cohesion = 2e5");
   run_joints("a joint monitor point with two coordinates",
              "Contraction joints/Monitor points=crest: 5, 10");
   run_joints("a joint monitor coordinate that is not a number",

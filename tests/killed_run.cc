@@ -17,10 +17,13 @@
 //  - solution.pvd names a prefix of the reference's outputs, every output of
 //    a step before the last recorded one included;
 //  - summary.json, written at the end only, is absent.
+// Then once interrupted with SIGINT (Ctrl-C) and continued with --resume.
 // Serial only: the test kills one process (under mpirun the whole job would
 // be killed the same way, and every file is written by rank 0 or per rank).
 
 #include <deal.II/base/hdf5.h>
+
+#include <boost/property_tree/json_parser.hpp>
 
 #include "archdam_tests.h"
 #include "case_text.h"
@@ -217,4 +220,51 @@ main()
                 << "\n  summary.json absent (written at the end): "
                 << yes(!fs::exists(directory + "/summary.json")) << std::endl;
     }
+
+  // Ctrl-C (SIGINT) in the dynamic stage ("user holes, second round", item
+  // 20): the run ends after its step with exit code 1 and a message naming
+  // the step, the results and how to continue; summary.json says why; the
+  // histories hold every step up to it, as the uninterrupted run's; and
+  // --resume continues from the checkpoint it wrote to the uninterrupted
+  // run's histories, byte for byte.
+  {
+    const unsigned int target    = draw(rng);
+    const std::string  directory = "interrupted";
+    fs::remove_all(directory);
+    const pid_t pid     = start(directory);
+    const auto  watched = archdam::testing::watch_lines(pid, directory + "/histories.csv", target + 1);
+    kill(pid, SIGINT);
+    waitpid(pid, &status, 0);
+    const std::string log = read_file(directory + ".log");
+    std::cout << "* interrupted (SIGINT) after at least " << target
+              << " history rows:\n  exit code 1, not killed: "
+              << yes(!watched.ended && WIFEXITED(status) && WEXITSTATUS(status) == 1)
+              << "\n  the message names the step, the results and --resume: "
+              << yes(log.find("archdam: run stopped: interrupted after step") != std::string::npos &&
+                     log.find("--resume continues the run") != std::string::npos)
+              << std::endl;
+    boost::property_tree::ptree summary;
+    unsigned int                step = 0;
+    try
+      {
+        boost::property_tree::read_json(directory + "/summary.json", summary);
+        step = summary.get<unsigned int>("stopped.step");
+      }
+    catch (const std::exception &)
+      {}
+    const auto csv = read_file(directory + "/histories.csv");
+    std::cout << "  summary.json names the step it stopped after: " << yes(step >= target)
+              << "\n  histories.csv: every step up to it (" << (step >= target ? "yes" : "NO")
+              << "), a prefix of the uninterrupted run's: "
+              << yes(count_lines(directory + "/histories.csv") == step + 2 &&
+                     reference_csv.compare(0, csv.size(), csv) == 0)
+              << std::endl;
+    const pid_t resumed = archdam::testing::start_child(
+      {ARCHDAM_EXECUTABLE, "case.prm", "--set", "Output/Directory=" + directory, "--resume"},
+      directory + "_resumed.log");
+    waitpid(resumed, &status, 0);
+    std::cout << "  --resume: exit code " << WEXITSTATUS(status)
+              << ", histories.csv the uninterrupted run's, byte for byte: "
+              << yes(read_file(directory + "/histories.csv") == reference_csv) << std::endl;
+  }
 }

@@ -47,6 +47,19 @@ main(int argc, char **argv)
     rp.water_level     = 40.;
     reservoir::water_level(rp, tria);
   });
+  // Westergaard's added mass on the channel's dam, 50 m high from z = 0.
+  for (const double level : {400., -5.})
+    check_input_error("Westergaard added mass with a water level of " + std::to_string(int(level)) +
+                        " m on a dam from z = 0 to 50 m",
+                      [&] {
+                        dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
+                        make_channel(ch, 3, 2, 0, tria);
+                        reservoir::ReservoirParameters rp;
+                        rp.model           = reservoir::Model::westergaard;
+                        rp.level_from_mesh = false;
+                        rp.water_level     = level;
+                        reservoir::water_level(rp, tria);
+                      });
   check_input_error("water and dam faces that do not meet face to face", [&] {
     dealii::parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
     make_channel(ch, 3, 2, 0, tria);

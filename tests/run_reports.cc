@@ -10,13 +10,19 @@
 // B. summary.json read with a JSON parser (Boost's): every column of
 //    histories.csv (displacement, acceleration in [m/s^2], principal stress)
 //    is a key of "peaks" with its value and time, under its full name, and
-//    each peak is the largest magnitude of its column in histories.csv; the
+//    each peak is its column's in histories.csv as doc/theory/results.md §1
+//    defines it (s1 the largest value, s3 the smallest, any other the
+//    largest magnitude; on a hand-made history too, whose largest tension is
+//    smaller than its largest compression: "user holes, second round",
+//    item 4); the
 //    mesh report's node pairs of the joint (counted on the mesh) equal the
 //    node pairs the analysis built.
 // C. Warnings in summary.json: a dynamic stage longer than its record (a
-//    two-sample record, 0.02 s, a run of 0.05 s), and a generated motion cut
+//    two-sample record, 0.02 s, a run of 0.05 s), a generated motion cut
 //    while strong (Duration 13 s, Strong motion end 12 s, decay 0.3 1/s:
-//    the envelope is exp(-0.3) = 0.74 at the end); a run without either has
+//    the envelope is exp(-0.3) = 0.74 at the end), an End time that is no
+//    whole number of steps (0.043 s at 0.01 s ends at 0.04 s), a step coarser
+//    than the record's sampling (0.01 s on 0.005 s); a run without any has
 //    no warning.
 // D. archdam-motion reads a case the way archdam does: `case` of a variant in
 //    a subfolder that includes its base one folder up, run from another
@@ -25,6 +31,8 @@
 
 #include <archdam/application/command_line.h>
 #include <archdam/application/motion_command.h>
+#include <archdam/output/monitors.h>
+#include <archdam/output/summary.h>
 
 #include <deal.II/base/mpi.h>
 
@@ -43,6 +51,7 @@
 using archdam::testing::log;
 using archdam::testing::write_input;
 namespace case_text = archdam::testing::case_text;
+namespace output    = archdam::output;
 
 namespace
 {
@@ -136,13 +145,22 @@ namespace
     std::stringstream        h(header);
     for (std::string n; std::getline(h, n, ',');)
       names.push_back(n);
-    std::vector<double> largest(names.size(), 0.);
+    // The peak as doc/theory/results.md §1 defines it: s1 its largest value
+    // (tension), s3 its smallest (compression), any other its value of
+    // largest magnitude.
+    const auto ends_with = [](const std::string &n, const std::string &tail) {
+      return n.size() >= tail.size() && n.compare(n.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    const auto score = [&](const unsigned int c, const double v) {
+      return ends_with(names[c], ".s1 [Pa]") ? v : ends_with(names[c], ".s3 [Pa]") ? -v : std::abs(v);
+    };
+    std::vector<double> largest(names.size(), std::nan(""));
     while (std::getline(csv, line))
       {
         std::stringstream row(line);
         std::string       value;
         for (unsigned int c = 0; std::getline(row, value, ','); ++c)
-          if (std::abs(std::stod(value)) > std::abs(largest[c]))
+          if (std::isnan(largest[c]) || score(c, std::stod(value)) > score(c, largest[c]))
             largest[c] = std::stod(value);
       }
     const auto *peaks   = child(s, "peaks");
@@ -158,8 +176,58 @@ namespace
     log() << "  " << names.size() - 1 << " columns in histories.csv, among them "
           << "top.ax [m/s^2]: " << (std::count(names.begin(), names.end(), "top.ax [m/s^2]") ? "yes" : "NO")
           << "\n  each a key of peaks with value and time: " << (found ? "yes" : "NO")
-          << "\n  each peak the largest magnitude of its column: " << (equal ? "yes" : "NO")
+          << "\n  each peak its column's (s1 largest, s3 smallest, else largest magnitude): "
+          << (equal ? "yes" : "NO")
           << "\n  no warnings: " << (child(s, "warnings") ? "NO" : "yes") << std::endl;
+    // A history whose largest tension is smaller than its largest
+    // compression (the values of a run where s1's value of largest
+    // magnitude was -7.272e4 Pa while it reached +6.88e4 Pa): s1's peak is
+    // the tension, s3's the compression, a displacement's the magnitude.
+    const std::vector<std::vector<double>> history{
+      {0., 0., 1278., 1.}, {0.1, -7.272e4, -500., -2.}, {0.2, 6.88e4, 900., 1.5}, {0.3, 1e3, 0., 0.}};
+    log() << "  a history with s1 = 0, -7.272e4, 6.88e4, 1e3 Pa: largest tension at row 2: "
+          << archdam::testing::yes(output::peak_row(history, 1, output::Peak::largest) == 2)
+          << "\n  s3 = 1278, -500, 900, 0 Pa: largest compression at row 1: "
+          << archdam::testing::yes(output::peak_row(history, 2, output::Peak::smallest) == 1)
+          << "\n  u = 1, -2, 1.5, 0 m: largest magnitude at row 1: "
+          << archdam::testing::yes(output::peak_row(history, 3, output::Peak::magnitude) == 1)
+          << std::endl;
+    // Every string is escaped for JSON ("user holes, second round", item
+    // 12): a case name with quotes, a backslash and non-ASCII letters (the
+    // case file's reader reads a tab in a value as a blank) read back by the
+    // parser from a run's summary.json; and a string with a tab, a carriage
+    // return and another control character written by the summary itself.
+    const std::string name = "tab\there \"quoted\" back\\slash Staumauer \xC3\x84\xC3\x96";
+    write_input("names.prm", column("names", "subsection Analysis\n  set Case name = " + name +
+                                                "\nend\n"));
+    run("names.prm");
+    const auto read_back = [](const std::string &directory, const std::string &key) {
+      try
+        {
+          return summary(directory).get<std::string>(key);
+        }
+      catch (const std::exception &e)
+        {
+          return std::string("(does not parse: ") + e.what() + ")";
+        }
+    };
+    std::string as_read = name;
+    as_read[3]          = ' ';
+    log() << "  a case name with quotes, a backslash and non-ASCII letters read back from "
+             "summary.json: "
+          << archdam::testing::yes(read_back("names", "case") == as_read) << std::endl;
+    const std::string controls = "a\tb\rc\x01d\ne \"f\" g\\h \xC3\x84";
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::filesystem::create_directories("controls");
+        output::Summary direct;
+        direct.set("text", controls);
+        direct.write("controls/summary.json");
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+    log() << "  a string with a tab, a carriage return, U+0001, a line end, quotes, a backslash "
+             "and a non-ASCII letter read back: "
+          << archdam::testing::yes(read_back("controls", "text") == controls) << std::endl;
     // One name, one number: the mesh report's node pairs (counted from the
     // mesh at the element degree) are the pairs the analysis built.
     archdam::testing::check_relative("  the mesh report's node pairs of joint 0 against the "
@@ -186,20 +254,56 @@ namespace
   warnings()
   {
     log() << "C. warnings" << std::endl;
+    // Run the case @p text as NAME.prm into NAME/ and say whether its
+    // summary warns with @p expected.
+    const auto check = [](const std::string &name, const std::string &text,
+                          const std::string &label, const std::string &expected) {
+      write_input(name + ".prm", text);
+      run(name + ".prm");
+      log() << "  " << label << ": " << archdam::testing::yes(warns(name, expected)) << std::endl;
+    };
     write_input("short.csv", "0, 0.1\n0.02, 0.2\n");
-    write_input("long_run.prm", column("long_run", short_record));
-    run("long_run.prm");
-    log() << "  a run of 0.05 s on a record of 0.02 s: "
-          << (warns("long_run", "past the end of the ground motion at 0.02 s") ? "yes" : "NO")
-          << std::endl;
-    write_input("cut.prm",
-                column("cut", "subsection Ground motion\n  subsection Component x\n"
-                              "    set Source = generated\n  end\n  subsection Generated motion\n"
-                              "    set Duration = 13\n    set Strong motion end = 12\n"
-                              "    set Decay coefficient = 0.3\n  end\nend\n"));
-    run("cut.prm");
-    log() << "  a generated motion of 13 s whose strong part ends at 12 s: "
-          << (warns("cut", "cut while strong") ? "yes" : "NO") << std::endl;
+    check("long_run", column("long_run", short_record), "a run of 0.05 s on a record of 0.02 s",
+          "past the end of the ground motion at 0.02 s");
+    // What the model is shaken by ("user holes, second round", item 1): the
+    // record a = 0.1, 0.2 m/s^2 at t = 0, 0.02 s, linear between, from rest:
+    // PGA 0.2 m/s^2 at 0.02 s, PGV = h (a0 + a1) / 2, PGD = h^2 (a0 / 3 + a1 / 6).
+    {
+      const auto   s = summary("long_run");
+      const double h = 0.02, a0 = 0.1, a1 = 0.2;
+      for (const auto &[name, value] :
+           std::vector<std::pair<std::string, double>>{{"PGA [m/s^2]", a1},
+                                                       {"PGA [g]", a1 / 9.80665},
+                                                       {"PGA time [s]", h},
+                                                       {"PGV [m/s]", h * (a0 + a1) / 2},
+                                                       {"PGD [m]", h * h * (a0 / 3 + a1 / 6)},
+                                                       {"duration [s]", h}})
+        archdam::testing::check_relative("  summary.json: ground motion, x, " + name,
+                                         number(s, {"ground motion", "x", name}), value,
+                                         1e-10); // written with 12 digits
+    }
+    check("cut",
+          column("cut", "subsection Ground motion\n  subsection Component x\n"
+                        "    set Source = generated\n  end\n  subsection Generated motion\n"
+                        "    set Duration = 13\n    set Strong motion end = 12\n"
+                        "    set Decay coefficient = 0.3\n  end\nend\n"),
+          "a generated motion of 13 s whose strong part ends at 12 s", "cut while strong");
+    // End time 0.043 s with steps of 0.01 s: the stage ends at 0.04 s, and
+    // says so ("user holes, second round", item 7).
+    std::string odd_end = column("odd_end", short_record);
+    odd_end.replace(odd_end.find("End time = 0.05"), 15, "End time = 0.043");
+    check("odd_end", odd_end, "End time 0.043 s with steps of 0.01 s, ending at 0.04 s",
+          "not a whole number of time steps of 0.01 s: the dynamic stage ends at the nearest "
+          "step, t = 0.04 s");
+    // A record sampled every 5 ms under steps of 10 ms (item 2).
+    std::ostringstream fine;
+    for (unsigned int k = 0; k <= 10; ++k)
+      fine << 0.005 * k << ", " << 0.1 * (k % 3) << "\n";
+    write_input("fine.csv", fine.str());
+    std::string coarse = column("coarse", short_record);
+    coarse.replace(coarse.find("short.csv"), 9, "fine.csv");
+    check("coarse", coarse, "steps of 0.01 s on a record sampled every 0.005 s",
+          "coarser than the sampling interval of the ground motion in x (0.005 s)");
   }
 
   void

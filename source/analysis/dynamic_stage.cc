@@ -1,14 +1,17 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/interrupt.h>
 #include <archdam/base/run_stopped.h>
 #include <archdam/base/wall_time.h>
 #include <archdam/time/divergence_check.h>
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace archdam::analysis
@@ -130,13 +133,67 @@ namespace archdam::analysis
             step_impulse() && current.step > 0 ? &mean_acceleration : nullptr};
   }
 
-  void
-  Simulation::check_motion_duration(const double end)
+  unsigned int
+  Simulation::dynamic_steps() const
   {
-    if (model().ground_motion().empty())
-      return;
+    const double end = p.time_integration.end_time > 0 ? p.time_integration.end_time :
+                                                         model().ground_motion().duration();
+    if (end <= 0)
+      throw InputError("Time integration/End time is 0 and there is no ground motion to "
+                       "take the duration from.");
+    return p.time_integration.n_steps(end);
+  }
+
+  void
+  Simulation::check_dynamic_steps()
+  {
+    const double       dt  = p.time_integration.time_step;
+    const double       end = dynamic_steps() * dt;
     std::ostringstream text;
     text << std::setprecision(6);
+    // The stage ends at the step nearest to End time (doc/theory/time-integration.md §8).
+    const double requested = p.time_integration.end_time;
+    if (requested > 0 && std::abs(end - requested) > 1e-6 * dt)
+      {
+        text << "End time = " << requested << " s is not a whole number of time steps of " << dt
+             << " s: the dynamic stage ends at the nearest step, t = " << end
+             << " s (Time integration/End time).";
+        warn(text.str());
+      }
+    if (model().ground_motion().empty())
+      return;
+    // The ground motion enters only at the steps: a step longer than a record
+    // has nothing to sample, one coarser than its sampling interval skips
+    // samples (doc/theory/time-integration.md §8).
+    for (unsigned int d = 0; d < 3; ++d)
+      if (model().ground_motion().has_component(d))
+        {
+          const auto &times    = model().ground_motion().record(d).times;
+          double      interval = std::numeric_limits<double>::max();
+          for (unsigned int k = 1; k < times.size(); ++k)
+            interval = std::min(interval, times[k] - times[k - 1]);
+          text.str("");
+          const double length = times.empty() ? 0. : times.back() - times.front();
+          if (dt >= length)
+            {
+              text << "Time integration: Time step = " << dt << " s is not shorter than the ground "
+                   << "motion in " << "xyz"[d] << " (" << length << " s): no step would sample it. "
+                   << "Use a step of at most its sampling interval (" << interval
+                   << " s) and about 20 steps per period of the highest frequency of interest "
+                   << "(doc/theory/time-integration.md §8).";
+              throw InputError(text.str());
+            }
+          if (dt > interval * (1. + 1e-9))
+            {
+              text << "Time step = " << dt << " s is coarser than the sampling interval of the ground "
+                   << "motion in " << "xyz"[d] << " (" << interval << " s): the motion is taken only at "
+                   << "the steps and the samples between them are skipped. Use a step of at most the "
+                   << "sampling interval, and about 20 steps per period of the highest frequency of "
+                   << "interest (doc/theory/time-integration.md §8).";
+              warn(text.str());
+            }
+        }
+    text.str("");
     if (end > model().ground_motion().duration() + 0.5 * p.time_integration.time_step)
       {
         text << "the dynamic stage runs to t = " << end << " s, past the end of the ground "
@@ -176,14 +233,8 @@ namespace archdam::analysis
   void
   Simulation::run_dynamic_stage()
   {
-    const double dt  = p.time_integration.time_step;
-    const double end = p.time_integration.end_time > 0 ? p.time_integration.end_time :
-                                                         model().ground_motion().duration();
-    if (end <= 0)
-      throw InputError("Time integration/End time is 0 and there is no ground motion to "
-                       "take the duration from.");
-    const unsigned int n_steps = p.time_integration.n_steps(end);
-    check_motion_duration(n_steps * dt);
+    const double       dt      = p.time_integration.time_step;
+    const unsigned int n_steps = dynamic_steps();
 
     const auto rayleigh = p.damping.rayleigh_coefficients();
     screen << "Dynamic stage: factorizing the effective matrix (" << model().space().dof_handler.n_dofs()
@@ -233,7 +284,8 @@ namespace archdam::analysis
     double                      last_checkpoint = 0.;
     std::string                 step_before; // the last good step, for the divergence stop
 
-    const unsigned int first_step = resume_from ? resume_from->step + 1 : 1;
+    const unsigned int       first_step = resume_from ? resume_from->step + 1 : 1;
+    const interrupt::Armed   interruptible;
     for (unsigned int n = first_step; n <= n_steps; ++n)
       {
         {
@@ -337,6 +389,24 @@ namespace archdam::analysis
               screen << "  contact iterations <= " << reported_contact_iterations;
             screen << std::endl;
             reported_contact_iterations = 0;
+          }
+
+        // Ctrl-C or SIGTERM (base/interrupt.h): every rank stops after the
+        // same step, with its results and a checkpoint of it.
+        if (n < n_steps && Utilities::MPI::max(int(interrupt::requested()), comm) > 0)
+          {
+            write_checkpoint();
+            finish_dynamic_stage(elapsed(), n + 1 - first_step);
+            std::ostringstream text;
+            text << "interrupted after step " << n << " of " << n_steps << " (t = " << current.time
+                 << " s): the results up to it are in '" << p.output.directory
+                 << "', with a checkpoint of it; the same command with --resume continues the run.";
+            summary.set("stopped/reason", text.str());
+            summary.set("stopped/step", n);
+            summary.set("stopped/time [s]", current.time);
+            summary.set("stopped/last complete time [s]", current.time);
+            write_summary();
+            throw RunStopped(text.str(), current.time, n);
           }
       }
     finish_dynamic_stage(elapsed(), n_steps + 1 - first_step);

@@ -6,12 +6,52 @@
 #include <archdam/output/mesh_report.h>
 #include <archdam/physics/reservoir/wetted_face_loads.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 
 namespace archdam::analysis
 {
   using namespace dealii;
+
+  namespace
+  {
+    /// What the model is shaken by, as read, scaled and processed: each
+    /// component's PGA (with its time), PGV, PGD (integrated from rest, exact
+    /// for an acceleration linear between samples) and duration, on the
+    /// screen and in the summary (doc/theory/results.md §6).
+    void
+    report_ground_motion(const loads::GroundMotion &motion, const ConditionalOStream &screen,
+                         output::Summary &summary)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (motion.has_component(d))
+          {
+            const auto  &record  = motion.record(d);
+            const auto   history = loads::integrate(record);
+            double       pgv = 0., pgd = 0.;
+            for (unsigned int k = 0; k < history.times.size(); ++k)
+              {
+                pgv = std::max(pgv, std::abs(history.velocity[k]));
+                pgd = std::max(pgd, std::abs(history.displacement[k]));
+              }
+            const double      pga      = record.peak();
+            const double      duration = record.times.back() - record.times.front();
+            const std::string key      = std::string("ground motion/") + "xyz"[d] + "/";
+            summary.set(key + "PGA [m/s^2]", pga);
+            summary.set(key + "PGA [g]", pga / loads::standard_gravity);
+            summary.set(key + "PGA time [s]", record.time_of_peak());
+            summary.set(key + "PGV [m/s]", pgv);
+            summary.set(key + "PGD [m]", pgd);
+            summary.set(key + "duration [s]", duration);
+            screen << "Ground motion in " << "xyz"[d] << ": PGA " << std::setprecision(4)
+                   << pga / loads::standard_gravity << " g (" << pga << " m/s^2) at t = "
+                   << record.time_of_peak() << " s, PGV " << 100. * pgv << " cm/s, PGD "
+                   << 100. * pgd << " cm, " << duration << " s" << std::endl;
+          }
+    }
+  } // namespace
 
   void
   Model::build_mesh(const Parameters &p, const ConditionalOStream &screen,
@@ -157,6 +197,7 @@ namespace archdam::analysis
                                             Point<dim>::unit_vector(d), influence[d]);
 
     motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
+    report_ground_motion(*motion, screen, summary);
     if (p.foundation.rock_has_mass())
       setup_massed_foundation(p, inertia, screen);
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);

@@ -44,6 +44,8 @@ namespace archdam::analysis
       setup_model();
     if (resume_from)
       check_checkpoint();
+    else if (p.analysis.runs("dynamic"))
+      check_dynamic_steps();
     if (p.analysis.runs("static") && !resume_from)
       run_static_stage();
     if (p.analysis.runs("modal") && !resume_from)

@@ -1,6 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/application/command_line.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/interrupt.h>
 #include <archdam/base/run_stopped.h>
 #include <archdam/base/version.h>
 #include <archdam/output/run_lock.h>
@@ -130,6 +131,7 @@ namespace archdam
           say(warnings, "archdam: warning: ", w);
       const output::RunLock lock(p.output.directory, p.analysis.case_name, MPI_COMM_WORLD);
       analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
+      interrupt::catch_signals();
       if (mesh_only)
         simulation.run_mesh_only();
       else

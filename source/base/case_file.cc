@@ -74,6 +74,10 @@ namespace archdam
         while (std::getline(in, line))
           {
             ++number;
+            // A UTF-8 byte-order mark, which some editors write and no one
+            // sees, is no part of the first line.
+            if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+              line.erase(0, 3);
             const std::string s = statement(line);
             if (s.rfind("include ", 0) == 0 || s == "include")
               {

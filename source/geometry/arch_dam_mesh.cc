@@ -230,10 +230,16 @@ namespace archdam::geometry
         {
           n_air = std::max(1u, static_cast<unsigned int>(
                                  std::ceil(nz * (H - p.water_level) / H - 1e-9)));
+          // a wet layer needs nz (H - level) / H <= nz - 1, so nz >= H / level
           if (n_air >= nz)
-            arch_dam_input_error("Cells over height (" + std::to_string(nz) +
-                                 ") is too small to put a layer boundary at the water "
-                                 "level; use at least 2.");
+            arch_dam_input_error(
+              "Cells over height (" + std::to_string(nz) +
+              ") is too small to put a layer boundary at the water level " +
+              number_text(p.water_level) + " m of a dam " + number_text(H) +
+              " m high; use at least " +
+              std::to_string(std::max(2u, static_cast<unsigned int>(
+                                            std::ceil(H / p.water_level - 1e-9)))) +
+              ".");
           n_wet = nz - n_air;
         }
       const double h_bottom_layer = n_wet > 0 ? p.water_level / n_wet : H / nz;

@@ -228,17 +228,18 @@ namespace archdam::joints
           };
           if (colon == std::string::npos)
             throw bad("expected 'k: Name = value, ...'");
-          int joint = 0;
-          try
-            {
-              joint = Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
-            }
-          catch (...)
-            {
-              throw bad("the joint number is not an integer");
-            }
+          // The values are read as the main section's are (Patterns::Integer
+          // and Patterns::Double: no 'inf', 'nan' or hexadecimal).
+          const std::string number = Utilities::trim(entry.substr(0, colon));
+          if (!Patterns::Integer().match(number))
+            throw bad("the joint number is not an integer");
+          const int joint = Utilities::string_to_int(number);
           if (joint < 0)
             throw bad("the joint number must be 0 or more");
+          for (const auto &earlier : result)
+            if (earlier.joint == static_cast<unsigned int>(joint))
+              throw bad("joint " + number + " is given twice; give all its values in one entry, "
+                        "'" + number + ": Name = value, Name = value'");
           for (const auto &assignment :
                Utilities::split_string_list(entry.substr(colon + 1), ','))
             {
@@ -249,16 +250,10 @@ namespace archdam::joints
               const auto it   = names.find(name);
               if (it == names.end())
                 throw bad("unknown name '" + name + "'");
-              double value = 0.;
-              try
-                {
-                  value =
-                    Utilities::string_to_double(Utilities::trim(assignment.substr(eq + 1)));
-                }
-              catch (...)
-                {
-                  throw bad("the value of '" + name + "' is not a number");
-                }
+              const std::string text = Utilities::trim(assignment.substr(eq + 1));
+              if (!Patterns::Double().match(text))
+                throw bad("the value of '" + name + "' is not a number");
+              const double value = Utilities::string_to_double(text);
               if (!(value >= 0.))
                 throw bad("'" + name + "' must be >= 0");
               result.push_back({static_cast<unsigned int>(joint), it->second, value});

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <iomanip>
+#include <sstream>
 
 namespace archdam::loads
 {
@@ -146,6 +148,11 @@ namespace archdam::loads
     prm.enter_subsection("Generated motion");
     generated.add_parameters(prm);
     prm.leave_subsection();
+    prm.add_parameter("Largest plausible PGA", largest_pga,
+                      "The largest peak ground acceleration of a component [g], as read, "
+                      "scaled and processed: a larger one is refused as a units error (a "
+                      "record in cm/s^2 read as g is 981 times too strong). 0 = no limit.",
+                      dealii::Patterns::Double(0.));
   }
 
 
@@ -191,6 +198,18 @@ namespace archdam::loads
             const std::string source = records[d].source;
             records[d] = process(records[d], c.processing, context + "processing: ");
             records[d].source = source;
+          }
+
+        const double pga = records[d].peak() / standard_gravity;
+        if (p.largest_pga > 0 && pga > p.largest_pga)
+          {
+            std::ostringstream text;
+            text << context << "its peak ground acceleration, as read, scaled and processed, is "
+                 << std::setprecision(4) << pga << " g, above Ground motion/Largest plausible PGA = "
+                 << p.largest_pga << " g: check the record's Units (a record in cm/s^2 read as g "
+                 << "is 981 times too strong), its Scale factor and its Processing; set the "
+                 << "limit higher (or 0) if the motion is meant.";
+            throw InputError(text.str());
           }
       }
   }

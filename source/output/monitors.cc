@@ -82,12 +82,16 @@ namespace archdam::output
     record_a      = has("acceleration");
     record_stress = has("principal stress");
 
-    names.emplace_back("time [s]");
+    const auto column = [&](const std::string &name, const Peak peak) {
+      names.push_back(name);
+      peaks.push_back(peak);
+    };
+    column("time [s]", Peak::magnitude);
     for (const auto &pt : points)
       {
         const auto add3 = [&](const std::string &q, const std::string &unit) {
           for (const char c : {'x', 'y', 'z'})
-            names.push_back(pt.name + "." + q + c + " [" + unit + "]");
+            column(pt.name + "." + q + c + " [" + unit + "]", Peak::magnitude);
         };
         if (record_u)
           add3("u", "m");
@@ -97,8 +101,8 @@ namespace archdam::output
           add3("a", "m/s^2");
         if (record_stress)
           {
-            names.push_back(pt.name + ".s1 [Pa]");
-            names.push_back(pt.name + ".s3 [Pa]");
+            column(pt.name + ".s1 [Pa]", Peak::largest);
+            column(pt.name + ".s3 [Pa]", Peak::smallest);
           }
       }
 

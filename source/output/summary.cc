@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <sstream>
 
@@ -27,8 +28,23 @@ namespace archdam::output
             case '\n':
               r += "\\n";
               break;
+            case '\t':
+              r += "\\t";
+              break;
+            case '\r':
+              r += "\\r";
+              break;
             default:
-              r += c;
+              // every other control character as \u00XX (JSON allows none
+              // raw); bytes of UTF-8 letters (>= 0x80) stay as they are
+              if (static_cast<unsigned char>(c) < 0x20)
+                {
+                  char code[8];
+                  std::snprintf(code, sizeof(code), "\\u%04x", static_cast<unsigned char>(c));
+                  r += code;
+                }
+              else
+                r += c;
           }
       return r + "\"";
     }

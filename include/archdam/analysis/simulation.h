@@ -132,11 +132,16 @@ namespace archdam::analysis
     /// other than the user expects.
     void
     warn(const std::string &text);
-    /// Warnings about the ground motion against the dynamic stage ending at
-    /// @p end: a run past the end of its record, a generated motion cut while
-    /// still strong.
+    /// The dynamic stage's number of steps (InputError without an end).
+    unsigned int
+    dynamic_steps() const;
+    /// Checks of the dynamic stage's steps against End time and the ground
+    /// motion, before any stage runs: warnings for an End time that is no
+    /// whole number of steps, a step coarser than a record's sampling, a run
+    /// past the end of its record, a generated motion cut while still
+    /// strong; InputError for a step not shorter than a record.
     void
-    check_motion_duration(double end);
+    check_dynamic_steps();
     template <typename R>
     R *
     own_recorder()

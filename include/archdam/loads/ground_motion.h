@@ -106,6 +106,11 @@ namespace archdam::loads
     /// What a component with Source = generated is.
     ArtificialMotionParameters generated;
 
+    /// The largest peak ground acceleration a component may have, in g, as
+    /// read, scaled and processed: above it the record is refused as a
+    /// units error (cm/s^2 read as g is 981 times too strong); 0 = no limit.
+    double largest_pga = 5.;
+
     /**
      * Declare, in the current subsection of @p prm, the subsections
      * "Component x", "Component y", "Component z", each with "Source",

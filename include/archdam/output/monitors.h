@@ -32,6 +32,21 @@ namespace archdam::output
   std::vector<MonitorPoint>
   parse_monitor_points(const std::string &text);
 
+  /// What the peak of a column is (doc/theory/results.md §1): the value of
+  /// largest magnitude, or for the major principal stress its largest value
+  /// (the largest tension) and for the minor one its smallest (the largest
+  /// compression), so that a larger compression cannot hide a tension.
+  enum class Peak
+  {
+    magnitude,
+    largest,
+    smallest
+  };
+
+  /// The row of @p rows where column @p c peaks in the sense of @p kind.
+  unsigned int
+  peak_row(const std::vector<std::vector<double>> &rows, unsigned int c, Peak kind);
+
   /**
    * Evaluates the solution at the monitor points. The FE weights of each
    * point (shape values and gradients at its reference coordinates) are
@@ -49,6 +64,13 @@ namespace archdam::output
     column_names() const
     {
       return names;
+    }
+
+    /// The peak of each column of column_names().
+    const std::vector<Peak> &
+    column_peaks() const
+    {
+      return peaks;
     }
 
     /// One row: the time, then each point's values of @p state, with
@@ -86,5 +108,6 @@ namespace archdam::output
     std::vector<Weights>      weights;
     bool                      record_u, record_v, record_a, record_stress;
     std::vector<std::string>  names;
+    std::vector<Peak>         peaks;
   };
 } // namespace archdam::output

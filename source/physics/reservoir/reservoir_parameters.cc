@@ -75,7 +75,9 @@ namespace archdam::physics::reservoir
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <limits>
+#include <sstream>
 
 namespace archdam::physics::reservoir
 {
@@ -100,6 +102,30 @@ namespace archdam::physics::reservoir
                        " m: with model " + selection_name(p.model, model_names()) +
                        " the water mesh defines the level (set 'Water level from mesh', "
                        "or change the mesh's water level).");
+    // Westergaard's added mass takes the level as given: the depth of the
+    // water on the dam's upstream face, between its base and its crest.
+    if (p.model == Model::westergaard && !p.level_from_mesh)
+      {
+        double base = std::numeric_limits<double>::max(), crest = -base;
+        for (const auto &cell : mesh.active_cell_iterators())
+          if (ids::is_dam(cell->material_id()))
+            for (const unsigned int v : cell->vertex_indices())
+              {
+                base  = std::min(base, cell->vertex(v)[dim - 1]);
+                crest = std::max(crest, cell->vertex(v)[dim - 1]);
+              }
+        const double tolerance = 1e-9 * std::max(1., crest - base);
+        if (base <= crest && !(p.water_level >= base - tolerance && p.water_level <= crest + tolerance))
+          {
+            std::ostringstream text;
+            text << "Reservoir/Water level = " << p.water_level << " m lies "
+                 << (p.water_level > crest ? "above the dam's crest" : "below the dam's base")
+                 << " (the dam reaches from z = " << base << " to " << crest
+                 << " m): Westergaard's added mass needs the water's depth on the dam's face, "
+                 << "a level between the two.";
+            throw InputError(text.str());
+          }
+      }
     return p.level_from_mesh ? top : p.water_level;
   }
 } // namespace archdam::physics::reservoir
