@@ -4,6 +4,7 @@
 // mesh.
 #pragma once
 
+#include <array>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -45,6 +46,17 @@ namespace archdam::testing::gmsh_example
   {
     return (p * nx_dam + 1) * (p * (nz_wet + nz_dry) + 1) - (p * nx_dam + 1);
   }
+  /// The corners of a hexahedron in Gmsh's order, as (i, j, k) offsets
+  /// from its first corner along x, y, z.
+  constexpr std::array<std::array<int, 3>, 8> hex_corners{{{{0, 0, 0}},
+                                                           {{1, 0, 0}},
+                                                           {{1, 1, 0}},
+                                                           {{0, 1, 0}},
+                                                           {{0, 0, 1}},
+                                                           {{1, 0, 1}},
+                                                           {{1, 1, 1}},
+                                                           {{0, 1, 1}}}};
+
   /// Two unit cubes side by side along @p axis, each its own dam block
   /// (10, 11), as a Gmsh 2.2 file's text with 12 or 16 nodes: the 16-node
   /// file does not connect them; @p gap > 0 moves the second one that far

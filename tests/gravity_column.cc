@@ -76,6 +76,7 @@
 #include <deal.II/hp/fe_values.h>
 
 #include "archdam_tests.h"
+#include "gmsh_example.h"
 #include "case_text.h"
 
 #include <array>
@@ -301,15 +302,6 @@ namespace
   // Stepped blocks (see the top): heights in cells of h.
   const std::vector<unsigned int> block_cells = {10, 6, 8};
 
-  /// The corners of a hexahedron in Gmsh's order, as (i, j, k) offsets.
-  constexpr std::array<std::array<unsigned int, 3>, 8> hex_corners{{{{0, 0, 0}},
-                                                                    {{1, 0, 0}},
-                                                                    {{1, 1, 0}},
-                                                                    {{0, 1, 0}},
-                                                                    {{0, 0, 1}},
-                                                                    {{1, 0, 1}},
-                                                                    {{1, 1, 1}},
-                                                                    {{0, 1, 1}}}};
 
   /// Gmsh 2.2 text of the blocks side by side in y (block k in
   /// [k a, (k + 1) a]), physical volume 10 + k, their bases physical surface 1
@@ -333,13 +325,14 @@ namespace
         for (unsigned int k = 0; k < block_cells[b]; ++k)
           {
             elements << ++n_elements << " 5 2 " << 10 + b << " 1";
-            for (const auto &[i, j, l] : hex_corners)
+            for (const auto &[i, j, l] : archdam::testing::gmsh_example::hex_corners)
               elements << ' ' << node(i, b + j, k + l);
             elements << "\n";
           }
         elements << ++n_elements << " 3 2 1 1";
         for (unsigned int c = 0; c < 4; ++c) // the hexahedron's base
-          elements << ' ' << node(hex_corners[c][0], b + hex_corners[c][1], 0);
+          elements << ' ' << node(archdam::testing::gmsh_example::hex_corners[c][0],
+                                 b + archdam::testing::gmsh_example::hex_corners[c][1], 0);
         elements << "\n";
       }
     return "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n" + std::to_string(tag.size()) +

@@ -22,12 +22,18 @@
 //    while strong (Duration 13 s, Strong motion end 12 s, decay 0.3 1/s:
 //    the envelope is exp(-0.3) = 0.74 at the end), an End time that is no
 //    whole number of steps (0.043 s at 0.01 s ends at 0.04 s), a step coarser
-//    than the record's sampling (0.01 s on 0.005 s); a run without any has
-//    no warning.
+//    than the record's sampling (0.01 s on 0.005 s), a concrete density of
+//    24000 kg/m^3 (a unit weight) and a modulus of 5e8 Pa (below any
+//    concrete's 1 GPa); a run
+//    without any has no warning.
 // D. archdam-motion reads a case the way archdam does: `case` of a variant in
 //    a subfolder that includes its base one folder up, run from another
 //    working directory, finds the base relative to the variant and the
 //    record relative to the case file's folder (doc/user-guide.md).
+// E. An output directory used before ("user holes, second round", item
+//    6): by default a new run removes the earlier run's files (a joints
+//    record it does not write) and keeps the user's; with keep they stay;
+//    with refuse the run stops, naming them, and writes nothing.
 
 #include <archdam/application/command_line.h>
 #include <archdam/application/motion_command.h>
@@ -304,6 +310,58 @@ namespace
     coarse.replace(coarse.find("short.csv"), 9, "fine.csv");
     check("coarse", coarse, "steps of 0.01 s on a record sampled every 0.005 s",
           "coarser than the sampling interval of the ground motion in x (0.005 s)");
+    // Values the parameters allow but no dam has (item 16): a unit weight of
+    // 24 kN/m^3 given as the density, a modulus below any concrete's.
+    const auto concrete = [](const std::string &entry) {
+      return "subsection Materials\n  subsection Concrete\n    set " + entry + "\n  end\nend\n";
+    };
+    check("unit_weight", column("unit_weight", short_record) + concrete("Density = 24000"),
+          "a concrete density of 24000 kg/m^3", "is it a unit weight in N/m^3?");
+    check("soft", column("soft", short_record) + concrete("Young's modulus = 5e8"),
+          "a concrete modulus of 5e8 Pa", "is it in kPa or MPa?");
+  }
+
+  /// Run archdam on @p file with the override @p assignment; its exit code
+  /// and error message on the log.
+  void
+  run_set(const std::string &what, const std::string &file, const std::string &assignment)
+  {
+    std::string err;
+    const int   code = archdam::testing::run_in_process(archdam::run_command_line, "archdam",
+                                                      {file, "--set", assignment}, err);
+    log() << "  " << what << ": exit code " << code << (err.empty() ? "" : ", " + err)
+          << std::endl;
+  }
+
+  void
+  earlier_results()
+  {
+    log() << "E. an earlier run's results in the output directory (item 6)" << std::endl;
+    namespace fs      = std::filesystem;
+    const auto exists = [](const std::string &name) {
+      return archdam::testing::yes(fs::exists("again/" + name));
+    };
+    // A record of an earlier, longer run that this one does not write, and
+    // a file of the user's.
+    const auto earlier = [] {
+      write_input("again/joints_00999.vtu", "an earlier run's\n");
+      write_input("again/notes.txt", "the user's\n");
+    };
+    write_input("again.prm", column("again", short_record));
+    run("again.prm");
+    earlier();
+    run("again.prm");
+    log() << "  replace (the default): joints_00999.vtu removed: "
+          << archdam::testing::yes(!fs::exists("again/joints_00999.vtu"))
+          << ", notes.txt kept: " << exists("notes.txt")
+          << ", this run's summary.json and histories.csv there: " << exists("summary.json")
+          << ", " << exists("histories.csv") << std::endl;
+    earlier();
+    run_set("keep", "again.prm", "Output/Earlier results=keep");
+    log() << "  keep: joints_00999.vtu still there: " << exists("joints_00999.vtu") << std::endl;
+    run_set("refuse", "again.prm", "Output/Earlier results=refuse");
+    log() << "  refuse: joints_00999.vtu still there: " << exists("joints_00999.vtu")
+          << std::endl;
   }
 
   void
@@ -335,4 +393,5 @@ main(int argc, char **argv)
   resultants_and_peaks();
   warnings();
   motion_case_from_elsewhere();
+  earlier_results();
 }

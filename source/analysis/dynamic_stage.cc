@@ -145,6 +145,40 @@ namespace archdam::analysis
   }
 
   void
+  Simulation::report_damping_ratios()
+  {
+    // zeta(omega) = alpha / (2 omega) + beta omega / 2 (doc/theory/solid.md §4)
+    const auto [alpha, beta] = p.damping.rayleigh_coefficients();
+    const auto zeta          = [alpha = alpha, beta = beta](const double f) {
+      const double omega = 2 * M_PI * f;
+      return alpha / (2 * omega) + beta * omega / 2;
+    };
+    screen << "  the dam's damping ratio:" << std::setprecision(3);
+    for (const double f : {0.5, 1., 2., 5., 10., 20.})
+      screen << "  " << 100 * zeta(f) << " % at " << f << " Hz";
+    screen << std::endl;
+    if (modes.omega.empty())
+      return;
+    const double f1 = modes.omega[0] / (2 * M_PI);
+    screen << "  at the first mode (" << f1 << " Hz): " << 100 * zeta(f1) << " %" << std::endl;
+    summary.set("dynamic/damping ratio at the first mode", zeta(f1));
+    const auto &d = p.damping;
+    if (d.mode == physics::solid::DampingMode::damping_ratio &&
+        (f1 < d.first_frequency || f1 > d.second_frequency) &&
+        std::abs(zeta(f1) - d.ratio) > 0.2 * d.ratio)
+      {
+        std::ostringstream text;
+        text << std::setprecision(3) << "the first mode (" << f1 << " Hz, modal stage) lies "
+             << "outside Damping/First frequency - Second frequency (" << d.first_frequency
+             << " - " << d.second_frequency << " Hz), between which the damping ratio is "
+             << 100 * d.ratio << " %: it is damped by " << 100 * zeta(f1)
+             << " %. Set the two frequencies about the modes that carry the response "
+             << "(doc/theory/solid.md §4).";
+        warn(text.str());
+      }
+  }
+
+  void
   Simulation::check_dynamic_steps()
   {
     const double       dt  = p.time_integration.time_step;
@@ -259,6 +293,7 @@ namespace archdam::analysis
       screen << "; rock: alpha = " << p.damping.rock_coefficients().first
              << " 1/s, beta = " << p.damping.rock_coefficients().second << " s";
     screen << ")" << std::endl;
+    report_damping_ratios();
 
     if (foundation())
       foundation()->start(current.u);

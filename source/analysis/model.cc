@@ -55,10 +55,11 @@ namespace archdam::analysis
 
   void
   Model::build_mesh(const Parameters &p, const ConditionalOStream &screen,
-                    output::Summary &summary, Triangulation<dim> &model)
+                    output::Summary &summary, Triangulation<dim> &model, const bool solves)
   {
     screen << "Building the mesh (Mesh/Source = "
            << selection_name(p.mesh.source, geometry::mesh_source_names()) << ")" << std::endl;
+    geometry::check_model_size(p.mesh, p.finite_element.degree, solves);
     geometry::build_model_mesh(p.mesh, p.base_directory, model);
     const auto report = output::make_mesh_report(model, p.finite_element.degree);
     if (screen.is_active())
@@ -112,7 +113,7 @@ namespace archdam::analysis
     namespace reservoir = physics::reservoir;
     const auto         water = p.reservoir.model;
     Triangulation<dim> model;
-    build_mesh(p, screen, summary, model);
+    build_mesh(p, screen, summary, model, true);
     if (water == reservoir::Model::none)
       geometry::remove_water(model);
     mesh.copy_triangulation(model);

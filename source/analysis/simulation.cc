@@ -1,13 +1,17 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
+#include <archdam/geometry/ids.h>
 #include <archdam/output/mesh_writer.h>
 
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <regex>
+#include <sstream>
 
 namespace archdam::analysis
 {
@@ -40,8 +44,11 @@ namespace archdam::analysis
                << resume_from->time << " s)" << std::endl;
       }
 
+    if (!resume)
+      output::handle_earlier_results(p.output.directory, p.output.earlier_results, comm);
     if (!built_model)
       setup_model();
+    check_plausibility();
     if (resume_from)
       check_checkpoint();
     else if (p.analysis.runs("dynamic"))
@@ -76,7 +83,7 @@ namespace archdam::analysis
     screen << "ArchDam: case '" << p.analysis.case_name << "', mesh only" << std::endl;
     create_output_directory();
     Triangulation<dim> model;
-    Model::build_mesh(p, screen, summary, model);
+    Model::build_mesh(p, screen, summary, model, false);
     summary.set("case", p.analysis.case_name);
     summary.set("model/cells", model.n_active_cells());
     summary.set("model/mpi processes", Utilities::MPI::n_mpi_processes(comm));
@@ -138,6 +145,65 @@ namespace archdam::analysis
 
     on_rank_zero(comm, [&] { summary.write(p.output.directory + "/summary.json"); });
     say_where_results_are();
+  }
+
+  void
+  Simulation::check_plausibility()
+  {
+    // Allowed by the parameters' ranges, but no dam's concrete or rock
+    // (doc/bad-input.md): a modulus in kPa or MPa, a unit weight given as the
+    // density.
+    const auto check_material = [&](const std::string &name,
+                                    const physics::solid::ElasticMaterial &m,
+                                    const double lowest_modulus) {
+      std::ostringstream text;
+      if (m.youngs_modulus < lowest_modulus)
+        text << "Materials/" << name << "/Young's modulus = " << m.youngs_modulus
+             << " Pa is below " << lowest_modulus / 1e9
+             << " GPa, softer than any dam's " << (name == "Rock" ? "rock" : "concrete")
+             << ": is it in kPa or MPa? (22 GPa is 2.2e10 Pa.)";
+      else if (m.density > 5000.)
+        text << "Materials/" << name << "/Density = " << m.density
+             << " kg/m^3 is twice any " << (name == "Rock" ? "rock" : "concrete")
+             << "'s: is it a unit weight in N/m^3? (24 kN/m^3 is 24000/9.81 = 2446.5 kg/m^3.)";
+      if (!text.str().empty())
+        warn(text.str());
+    };
+    bool   rock = false;
+    double top  = -std::numeric_limits<double>::max(); // of the water cells
+    for (const auto &cell : model().triangulation().active_cell_iterators())
+      if (cell->material_id() == ids::rock)
+        rock = true;
+      else if (cell->material_id() == ids::water)
+        for (const unsigned int v : cell->vertex_indices())
+          top = std::max(top, cell->vertex(v)[dim - 1]);
+    if (p.static_loads.gravity && std::abs(p.static_loads.g - 9.81) > 1.)
+      {
+        std::ostringstream text;
+        text << "Static loads/Gravitational acceleration = " << p.static_loads.g
+             << " m/s^2 is not the Earth's (9.81 m/s^2).";
+        warn(text.str());
+      }
+    check_material("Concrete", p.materials.concrete, 1e9);
+    if (rock)
+      check_material("Rock", p.materials.rock, 1e8);
+
+    // Westergaard's added mass takes the level as given; a reservoir mesh
+    // that says otherwise is probably the level meant.
+    namespace reservoir = physics::reservoir;
+    if (p.reservoir.model == reservoir::Model::westergaard && !p.reservoir.level_from_mesh)
+      {
+        if (top > -std::numeric_limits<double>::max() &&
+            std::abs(top - p.reservoir.water_level) > 1e-6 * std::max(1., std::abs(top)))
+          {
+            std::ostringstream text;
+            text << "Reservoir/Water level = " << p.reservoir.water_level
+                 << " m, but the reservoir's mesh reaches z = " << top
+                 << " m: Westergaard's added mass takes the level given (set 'Water level "
+                 << "from mesh' to take the mesh's).";
+            warn(text.str());
+          }
+      }
   }
 
   void

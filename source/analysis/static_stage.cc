@@ -3,7 +3,11 @@
 #include <archdam/base/input_error.h>
 #include <archdam/time/factorized_operator.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace archdam::analysis
 {
@@ -59,6 +63,7 @@ namespace archdam::analysis
                        "singular (is every part of it supported?).");
     screen << "Static stage: max |u_i| = " << std::setprecision(4) << max_u << " m"
            << std::endl;
+    check_static_state(max_u);
     summary.set("static/max nodal displacement component [m]", max_u);
     report_static_resultants();
     for (unsigned int k = 0; k < model().monitors().monitor_points().size(); ++k)
@@ -88,6 +93,26 @@ namespace archdam::analysis
   }
 
   void
+  Simulation::check_static_state(const double max_u) const
+  {
+    // A dam under its loads moves by millimetres to centimetres; a static
+    // displacement of 1 % of the model's size is a strain of order 1e-2 in a
+    // small-strain model (concrete cracks at 1e-4): the loads or the
+    // stiffness are in other units, and the dynamic stage would only diverge.
+    const auto   box  = GridTools::compute_bounding_box(model().triangulation());
+    const double size = box.get_boundary_points().first.distance(box.get_boundary_points().second);
+    if (max_u <= 1e-2 * size)
+      return;
+    std::ostringstream text;
+    text << std::setprecision(4) << "Static stage: the largest displacement, " << max_u
+         << " m, is more than 1 % of the model's size (" << size
+         << " m), which no dam under its own weight and its water reaches: check "
+         << "Static loads/Gravitational acceleration (" << p.static_loads.g << " m/s^2), the "
+         << "Materials' Young's moduli and densities (their units) and the water level.";
+    throw InputError(text.str());
+  }
+
+  void
   Simulation::report_static_resultants()
   {
     namespace reservoir = physics::reservoir;
@@ -105,11 +130,30 @@ namespace archdam::analysis
     });
     if (screen.is_active())
       r.print(screen.get_stream());
-    for (const auto &[name, force] :
-         {std::pair{"weight", r.weight}, {"water", r.water}, {"support", r.support}})
+    const std::string key = "static/resultants on the dam [N]/";
+    for (const auto &[name, force] : {std::pair{"weight", r.weight},
+                                      {"water", r.water},
+                                      {"support", r.reaction},
+                                      {"support from the stress", r.support_stress},
+                                      {"moments [N m]/weight", r.weight_moment},
+                                      {"moments [N m]/water", r.water_moment},
+                                      {"moments [N m]/support", r.reaction_moment},
+                                      {"moments [N m]/about [m]", Tensor<1, dim>(r.centroid)}})
       for (unsigned int d = 0; d < dim; ++d)
-        summary.set(std::string("static/resultants on the dam [N]/") + name + "/" + "xyz"[d],
-                    force[d]);
-    summary.set("static/resultants on the dam [N]/out of balance", r.out_of_balance());
+        summary.set(key + name + "/" + "xyz"[d], force[d]);
+    summary.set(key + "out of balance", r.out_of_balance());
+    summary.set(key + "out of balance of the stress", r.stress_out_of_balance());
+    summary.set(key + "note", "support: the reactions, the residual of the dam's equations at "
+                              "the support's nodes; support from the stress: int sigma n dA "
+                              "over the support's faces, a check of the stress");
+    if (r.out_of_balance() > StaticResultants::warning_threshold)
+      {
+        std::ostringstream text;
+        text << std::setprecision(2) << "Static stage: the reactions balance the loads on the "
+             << "dam only to " << r.out_of_balance() << " of them (more than "
+             << StaticResultants::warning_threshold << "): the static state is not in "
+             << "equilibrium to that error (doc/theory/loading-sequence.md §1).";
+        warn(text.str());
+      }
   }
 } // namespace archdam::analysis

@@ -3,6 +3,7 @@
 #include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/number_text.h>
+#include <archdam/base/version.h>
 #include <archdam/loads/artificial_motion.h>
 #include <archdam/loads/design_spectrum.h>
 #include <archdam/loads/ground_motion.h>
@@ -42,7 +43,7 @@ Usage:
   archdam-motion scale INPUT --pga G [input] [output]
   archdam-motion inspect INPUT [input] [processing] [target] [output]
   archdam-motion case CASE.prm [--component x|y|z] [target] [output]
-  archdam-motion --help
+  archdam-motion --help | --version
 
 Every command prints a summary of the motion (PGA, PGV, PGD, end velocity
 and displacement, Arias intensity, significant duration, spectral values).
@@ -97,9 +98,10 @@ Output options:
   --histories FILE    CSV: time, acceleration, velocity, displacement (SI)
   --spectrum FILE     CSV: period, SD, PSV, PSA (and the target's PSA)
   --plot FILE         the plot FILE (PNG: histories, and the spectrum against
-                      the target): writes its data (FILE's name with
-                      .histories.csv and .spectrum.csv) and prints the
-                      command that draws it (/usr/bin/python3 with matplotlib)
+                      the target) and its data (FILE's name with
+                      .histories.csv and .spectrum.csv), drawn with
+                      /usr/bin/python3 and matplotlib (without them, the
+                      command that draws it is printed)
   --spectrum-damping Z  damping of the spectrum written and plotted (0.05)
   --title TEXT        title of the plot and of the AT2 header
 
@@ -454,9 +456,7 @@ Errors in the input give one message and exit code 1.
     write_histories(const std::string &path, const AccelerationRecord &r)
     {
       const MotionHistories h = integrate(r);
-      std::ofstream         f(path);
-      if (!f)
-        throw InputError("Cannot write '" + path + "'.");
+      std::ofstream         f = open_for_writing(path);
       f << "time [s],acceleration [m/s^2],velocity [m/s],displacement [m]\n";
       char line[128];
       for (std::size_t k = 0; k < h.times.size(); ++k)
@@ -474,9 +474,7 @@ Errors in the input give one message and exit code 1.
                    const double                         damping)
     {
       const ResponseSpectrum s = response_spectrum(r, output_periods(), damping);
-      std::ofstream          f(path);
-      if (!f)
-        throw InputError("Cannot write '" + path + "'.");
+      std::ofstream          f = open_for_writing(path);
       f << "period [s],SD [m],PSV [m/s],PSA [m/s^2]" << (target ? ",target PSA [m/s^2]" : "")
         << "\n";
       char line[160];
@@ -507,9 +505,9 @@ Errors in the input give one message and exit code 1.
 
     /// The plot @p path (a PNG: the histories, and the spectrum against the
     /// target): its data next to it (the name with .histories.csv and
-    /// .spectrum.csv), and on @p out the command that draws it from them
-    /// (scripts/plot_motion.py, /usr/bin/python3 with matplotlib). The user
-    /// runs it: the program itself starts no other program.
+    /// .spectrum.csv), drawn from them by scripts/plot_motion.py with
+    /// /usr/bin/python3 and matplotlib; where these are missing, or drawing
+    /// fails, the command that draws it is printed instead.
     void
     write_plot_data(std::ostream                        &out,
                     const std::string                   &path,
@@ -525,13 +523,31 @@ Errors in the input give one message and exit code 1.
         std::filesystem::path(path).replace_extension(".spectrum.csv").string();
       write_histories(histories, r);
       write_spectrum(spectrum, r, target, damping);
-      out << "wrote " << histories << " and " << spectrum << "; the plot " << path
-          << " is drawn by\n  /usr/bin/python3 "
-          << shell_quote(std::string(ARCHDAM_SCRIPTS_DIR) + "/plot_motion.py") << " --histories "
-          << shell_quote(histories) << " --spectrum " << shell_quote(spectrum) << " --output "
-          << shell_quote(path) << " --title " << shell_quote(title) << " --damping "
-          << str(damping) << (match_range.empty() ? "" : " --match-range " + match_range)
-          << "\n";
+      const std::string python = "/usr/bin/python3";
+      const std::string script = std::string(ARCHDAM_SCRIPTS_DIR) + "/plot_motion.py";
+      const std::string command =
+        python + " " + shell_quote(script) + " --histories " + shell_quote(histories) +
+        " --spectrum " + shell_quote(spectrum) + " --output " + shell_quote(path) +
+        " --title " + shell_quote(title) + " --damping " + str(damping) +
+        (match_range.empty() ? "" : " --match-range " + match_range);
+      out << "wrote " << histories << " and " << spectrum << "\n";
+      std::error_code ec;
+      if (std::filesystem::exists(python, ec) && std::filesystem::exists(script, ec) &&
+          std::system((command + " > /dev/null 2>&1").c_str()) == 0)
+        out << "wrote " << path << "\n";
+      else
+        out << "the plot " << path << " needs " << python << " with matplotlib; draw it with\n  "
+            << command << "\n";
+    }
+
+    /// --spectrum-damping, checked before anything is computed or printed.
+    double
+    spectrum_damping(const Options &o)
+    {
+      const double damping = o.number("--spectrum-damping", 0.05);
+      if (!(damping >= 0 && damping < 1))
+        throw InputError("--spectrum-damping must be at least 0 and below 1.");
+      return damping;
     }
 
     void
@@ -541,10 +557,10 @@ Errors in the input give one message and exit code 1.
                   const std::optional<TargetSpectrum> &target,
                   const std::string                   &match_range)
     {
-      const double damping = o.number("--spectrum-damping", 0.05);
-      if (!(damping >= 0 && damping < 1))
-        throw InputError("--spectrum-damping must be at least 0 and below 1.");
-      const std::string title = o.text("--title", r.source);
+      const double      damping = spectrum_damping(o);
+      // the record's file name, not its whole path
+      const std::string title =
+        o.text("--title", std::filesystem::path(r.source).filename().string());
       if (o.has("--csv"))
         {
           write_two_column(o.text("--csv", ""), r, title);
@@ -613,6 +629,14 @@ Errors in the input give one message and exit code 1.
       p.match_pga           = !o.has("--no-pga-match");
       if (o.has("--vertical-factor") && d != 2)
         throw InputError("--vertical-factor applies to --component z only.");
+      spectrum_damping(o);
+      // Earthquake motions last seconds to minutes; beyond these the
+      // generation would only run out of memory or time.
+      if (!(p.duration > 0 && p.duration <= 1000) ||
+          !(p.time_step > 0 && p.duration / p.time_step <= 1e6))
+        throw InputError("--duration " + str(p.duration) + " s at --dt " + str(p.time_step) +
+                         " s: a generated motion lasts at most 1000 s and has at most 1e6 "
+                         "samples (an earthquake's strong motion lasts seconds to a minute).");
 
       const GenerationSettings settings = p.settings(d, "");
       GenerationReport         report;
@@ -644,7 +668,7 @@ Errors in the input give one message and exit code 1.
       AccelerationRecord r = read_input(o, o.positional[0]);
       if (processing.any())
         r = process(r, processing, "");
-      summarize(out, r, target, o.number("--spectrum-damping", 0.05), {0.04, 4.});
+      summarize(out, r, target, spectrum_damping(o), {0.04, 4.});
       write_outputs(out, o, r, target, "");
       return 0;
     }
@@ -665,7 +689,7 @@ Errors in the input give one message and exit code 1.
       const double factor = pga * standard_gravity / r.peak();
       r                   = scale_to_pga(r, pga * standard_gravity);
       out << "Scaled by " << str(factor, 6) << "\n";
-      summarize(out, r, std::nullopt, o.number("--spectrum-damping", 0.05), {0.04, 4.});
+      summarize(out, r, std::nullopt, spectrum_damping(o), {0.04, 4.});
       write_outputs(out, o, r, std::nullopt, "");
       return 0;
     }
@@ -735,7 +759,7 @@ Errors in the input give one message and exit code 1.
               range = {settings.period_min, settings.period_max};
               out << "generated in " << report->iterations << " iteration(s), ";
             }
-          summarize(out, motion.record(d), t, o.number("--spectrum-damping", 0.05), range);
+          summarize(out, motion.record(d), t, spectrum_damping(o), range);
           write_outputs(out, o, motion.record(d), t,
                         str(range.first) + ":" + str(range.second));
         }
@@ -751,6 +775,11 @@ Errors in the input give one message and exit code 1.
       if (args[0] == "--help" || args[0] == "-h" || args[0] == "help")
         {
           out << usage;
+          return 0;
+        }
+      if (args[0] == "--version")
+        {
+          out << "archdam-motion " << version() << "\n";
           return 0;
         }
       const Options o = parse(args);

@@ -21,6 +21,7 @@
 // u = u_k between blocks; every vertex is shared (the splitter duplicates
 // joint and fluid-solid vertices later).
 
+#include <archdam/base/input_error.h>
 #include <archdam/base/number_text.h>
 #include <archdam/geometry/arch_dam_mesh.h>
 #include <archdam/geometry/arch_dam_shape.h>
@@ -34,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,14 @@ namespace archdam::geometry
     {
       if (!(L > 0))
         return {0.};
+      if (!(hmax > 0) || L / hmax > 1e6)
+        {
+          std::ostringstream text;
+          text << "Mesh/Arch dam: cells of at most " << hmax << " m over " << L
+               << " m of rock or water would be more than a million along one line: the Rock "
+               << "cell size or Water cell size is far too small (doc/arch-dam-geometry.md).";
+          throw InputError(text.str());
+        }
       h0 = std::min(h0, hmax);
       std::vector<double> sizes;
       double              total = 0, h = h0;
@@ -362,7 +372,52 @@ namespace archdam::geometry
       l.k_water                = (water && x_r < x_ru) ? 0 : n_far;
       return l;
     }
+
+    /// The region of cell (i, k, j) of the index grid (none outside it).
+    Region
+    region_of(const Layout &l, const bool water, const long i, const long k, const long j)
+    {
+      const long ni = l.across.size() - 1, nk = l.stream.size() - 1, nj = l.levels.size() - 1;
+      if (i < 0 || k < 0 || j < 0 || i >= ni || k >= nk || j >= nj)
+        return Region::none;
+      const bool canyon = i >= long(l.i0) && i < long(l.i1);
+      if (canyon && j >= long(l.j0))
+        {
+          if (k >= long(l.k0) && k < long(l.k1))
+            return Region::dam;
+          if (k < long(l.k0) && water && j < long(l.j_water) && k >= long(l.k_water))
+            return Region::water;
+          return Region::air;
+        }
+      return k >= long(l.k_rock) ? Region::rock : Region::outside;
+    }
+
+    /// Whether a cell of region @p r is in the mesh.
+    bool
+    kept_region(const Region r, const bool rock)
+    {
+      return r == Region::dam || r == Region::water || (r == Region::rock && rock);
+    }
   } // namespace
+
+  std::array<double, 2>
+  arch_dam_cell_count(const ArchDamParameters &p)
+  {
+    const ArchDamGeometry g(p);
+    const Layout          l     = make_layout(g);
+    const bool            water = g.has_water(), rock = g.has_rock();
+    std::array<double, 2> count{0., 0.};
+    const double          n_grid = double(l.levels.size() - 1) * double(l.stream.size() - 1) *
+                          double(l.across.size() - 1);
+    if (n_grid > 1e9) // at least a tenth of it is kept
+      return {n_grid / 10, 0.};
+    for (long j = 0; j + 1 < long(l.levels.size()); ++j)
+      for (long k = 0; k + 1 < long(l.stream.size()); ++k)
+        for (long i = 0; i + 1 < long(l.across.size()); ++i)
+          if (const Region r = region_of(l, water, i, k, j); kept_region(r, rock))
+            count[r == Region::water] += 1.;
+    return count;
+  }
 
   void
   generate_arch_dam(const ArchDamParameters &p, Triangulation<3> &tria)
@@ -376,22 +431,9 @@ namespace archdam::geometry
                        nj = l.levels.size() - 1;
 
     const auto region = [&](const long i, const long k, const long j) {
-      if (i < 0 || k < 0 || j < 0 || i >= long(ni) || k >= long(nk) || j >= long(nj))
-        return Region::none;
-      const bool canyon = i >= long(l.i0) && i < long(l.i1);
-      if (canyon && j >= long(l.j0))
-        {
-          if (k >= long(l.k0) && k < long(l.k1))
-            return Region::dam;
-          if (k < long(l.k0) && water && j < long(l.j_water) && k >= long(l.k_water))
-            return Region::water;
-          return Region::air;
-        }
-      return k >= long(l.k_rock) ? Region::rock : Region::outside;
+      return region_of(l, water, i, k, j);
     };
-    const auto kept = [&](const Region r) {
-      return r == Region::dam || r == Region::water || (r == Region::rock && rock);
-    };
+    const auto kept = [&](const Region r) { return kept_region(r, rock); };
 
     // Cells in index order, their vertices, and the vertex positions.
     const auto node = [&](const unsigned int i, const unsigned int k, const unsigned int j) {

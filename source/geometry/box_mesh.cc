@@ -44,8 +44,8 @@ namespace archdam::geometry
                       Patterns::Double(0.));
     prm.add_parameter("Rock cell size", rock_cell_size,
                       "Target edge length of rock cells outside the dam "
-                      "footprint and below it [m].",
-                      Patterns::Double(0., Patterns::Double::max_double_value));
+                      "footprint and below it [m], at least 1 mm.",
+                      Patterns::Double(1e-3, Patterns::Double::max_double_value));
     prm.leave_subsection();
   }
 
@@ -76,6 +76,18 @@ namespace archdam::geometry
       return h;
     }
   } // namespace
+
+  double
+  box_cell_count(const BoxParameters &p)
+  {
+    const bool   rock       = p.rock_depth > 0;
+    const auto   rock_cells = [&](const double len) {
+      return len > 0 ? std::max(1., std::ceil(len / p.rock_cell_size - 1e-9)) : 0.;
+    };
+    const double e  = rock ? p.rock_extent : 0.;
+    const double nx = p.cells_x + 2 * rock_cells(e), ny = p.cells_y + 2 * rock_cells(e);
+    return double(p.cells_x) * p.cells_y * p.cells_z + (rock ? nx * ny * rock_cells(p.rock_depth) : 0.);
+  }
 
   void
   generate_box(const BoxParameters &p, Triangulation<dim> &tria)

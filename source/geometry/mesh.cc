@@ -1,5 +1,7 @@
 #include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/number_text.h>
+#include <archdam/geometry/box_mesh.h>
 #include <archdam/geometry/arch_dam_mesh.h>
 #include <archdam/geometry/gmsh_mesh.h>
 #include <archdam/geometry/ids.h>
@@ -9,7 +11,13 @@
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <iomanip>
 #include <set>
+#include <sstream>
 
 namespace archdam::geometry
 {
@@ -81,6 +89,56 @@ namespace archdam::geometry
       }
     mesh.clear();
     mesh.copy_triangulation(solid);
+  }
+
+  void
+  check_model_size(const MeshParameters &p, const unsigned int degree, const bool solves)
+  {
+    // Solid cells carry 3 degree^3 DOFs each and water cells degree^3 (the
+    // nodes a cell adds in a large structured mesh). The peak memory of a
+    // run is its factorization's: 9.5 GB at the reference case's 291,114
+    // DOFs, growing as DOFs^(4/3) for a 3-D mesh in nested dissection order
+    // (doc/performance.md §5: 2.3 GB at 96 k, 0.5 GB at 27 k); building the
+    // mesh alone takes about 2 kB a cell.
+    std::array<double, 2> cells{0., 0.};
+    std::string           set_by;
+    switch (p.source)
+      {
+        case MeshSource::box:
+          cells[0] = box_cell_count(p.box);
+          set_by   = "Mesh/Box (Cells in x, y, z = " + std::to_string(p.box.cells_x) + ", " +
+                   std::to_string(p.box.cells_y) + ", " + std::to_string(p.box.cells_z) +
+                   "; Rock cell size = " + number_text(p.box.rock_cell_size) + " m)";
+          break;
+        case MeshSource::arch_dam:
+          cells  = arch_dam_cell_count(p.arch_dam);
+          set_by = "Mesh/Arch dam (Cells over height = " +
+                   std::to_string(p.arch_dam.cells_over_height) + ", Cells across each block = " +
+                   std::to_string(p.arch_dam.cells_across_block) + ", Cells through thickness = " +
+                   std::to_string(p.arch_dam.cells_through) + "; Rock cell size = " +
+                   number_text(p.arch_dam.rock_cell_size) + " m, Water cell size = " +
+                   number_text(p.arch_dam.water_cell_size) + " m)";
+          break;
+        case MeshSource::gmsh: // its size is the file's
+          return;
+      }
+    const double n_cells = cells[0] + cells[1];
+    const double dofs    = (3 * cells[0] + cells[1]) * std::pow(double(degree), 3);
+    const double needed  = solves ? 9.5e9 * std::pow(dofs / 291114., 4. / 3.) : 2e3 * n_cells;
+    const double memory  = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    if (std::isfinite(needed) && needed <= 0.8 * memory)
+      return;
+    std::ostringstream text;
+    text << std::setprecision(3) << set_by << " gives about " << n_cells
+         << " cells and " << dofs << " DOFs, ";
+    if (solves)
+      text << "whose factorization would need about " << needed / 1e9
+           << " GB (9.5 GB at 291,114 DOFs, growing as DOFs^(4/3); doc/performance.md §5)";
+    else
+      text << "a mesh of about " << needed / 1e9 << " GB";
+    text << ", and this machine has " << memory / 1e9
+         << " GB: make the cells larger or fewer (doc/user-guide.md, \"Look at the model first\").";
+    throw InputError(text.str());
   }
 
   void

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -362,6 +364,21 @@ namespace archdam::loads
 
 
 
+  std::ofstream
+  open_for_writing(const std::string &filename)
+  {
+    std::ofstream out(filename);
+    if (out)
+      return out;
+    const int         error  = errno;
+    const std::string folder = std::filesystem::path(filename).parent_path().string();
+    std::error_code   ec;
+    if (!folder.empty() && !std::filesystem::is_directory(folder, ec))
+      throw InputError("Cannot write '" + filename + "': its folder '" + folder +
+                       "' does not exist.");
+    throw InputError("Cannot write '" + filename + "': " + std::strerror(error) + ".");
+  }
+
   void
   write_at2(const std::string        &filename,
             const AccelerationRecord &record,
@@ -378,9 +395,7 @@ namespace archdam::loads
                        "': an AT2 record starts at t = 0, this one at t = " +
                        number_text(record.times.front()) +
                        " s; cut a time window first.");
-    std::ofstream out(filename);
-    if (!out)
-      throw InputError("Cannot write '" + filename + "'.");
+    std::ofstream out = open_for_writing(filename);
 
     // One header line each, without line breaks that would shift the 4th.
     const auto one_line = [](std::string s) {
@@ -419,9 +434,7 @@ namespace archdam::loads
                    const AccelerationRecord &record,
                    const std::string        &description)
   {
-    std::ofstream out(filename);
-    if (!out)
-      throw InputError("Cannot write '" + filename + "'.");
+    std::ofstream out = open_for_writing(filename);
     out << "# " << description << "\n"
         << "# time [s], acceleration [m/s^2]\n";
     char line[64];

@@ -35,6 +35,12 @@ namespace archdam::output
                       Patterns::Bool());
     prm.add_parameter("Timer summary", timer_summary,
                       "Print wall times per stage at the end.", Patterns::Bool());
+    add_selection(prm, "Earlier results", earlier_results, earlier_results_names(),
+                  "What a new run (not --resume) does with an earlier run's results in "
+                  "Directory (its summary, histories, tables, field, mesh and checkpoint "
+                  "files, and nothing else): replace = remove them first, so that the "
+                  "directory holds this run's alone; keep = write over them and leave "
+                  "the rest; refuse = stop, naming them.");
   }
 
   std::string

@@ -40,10 +40,12 @@ namespace archdam::analysis
 
     /// The model mesh as the case describes it, water included
     /// (geometry::build_model_mesh()), with its report on @p screen and in
-    /// @p summary, and checked for the static stage (check_static_support()).
+    /// @p summary, and checked for the static stage (check_static_support());
+    /// first its size against the machine's memory, with the factorization
+    /// of a run that @p solves (geometry::check_model_size()).
     static void
     build_mesh(const Parameters &p, const dealii::ConditionalOStream &screen,
-               output::Summary &summary, dealii::Triangulation<dim> &mesh);
+               output::Summary &summary, dealii::Triangulation<dim> &mesh, bool solves);
 
     const dealii::Triangulation<dim> &
     triangulation() const

@@ -142,6 +142,21 @@ namespace archdam::analysis
     /// strong; InputError for a step not shorter than a record.
     void
     check_dynamic_steps();
+    /// Warnings for values that are allowed but unlikely for a dam (a
+    /// modulus or density in other units, a Westergaard water level other
+    /// than the reservoir mesh's), before any stage runs.
+    void
+    check_plausibility();
+    /// The damping ratio that the dam's Rayleigh coefficients give at a few
+    /// frequencies and at the modal stage's first mode, on screen and in
+    /// summary.json; a warning when that mode lies outside the frequencies
+    /// at which the damping ratio was set and is damped otherwise.
+    void
+    report_damping_ratios();
+    /// InputError when the static state is no state of a dam (a largest
+    /// displacement above 1 % of the model's size).
+    void
+    check_static_state(double max_u) const;
     template <typename R>
     R *
     own_recorder()

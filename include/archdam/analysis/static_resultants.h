@@ -3,6 +3,7 @@
 #include <archdam/fe/fe_space.h>
 #include <archdam/physics/solid/materials.h>
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
 #include <functional>
@@ -12,25 +13,44 @@ namespace archdam::analysis
 {
   /**
    * The loads on the dam of the static stage and what holds it, as resultant
-   * forces [N] (doc/theory/loading-sequence.md §1): the first check an
-   * engineer makes of a model. The dam is a free body loaded by its weight
-   * and the water on its wetted face and held by its support, the rock
-   * through the faces they share (or the fixed truncation where the dam
-   * stands on it, no rock meshed); the joints are inside it and cancel. The
-   * support's force is integrated from the recovered stress, int sigma n dA
-   * over those faces (n out of the dam), not taken from the loads, so the
-   * sum weight + water + support is the model's own out-of-balance: zero for
-   * an exact stress, small and falling with the mesh otherwise.
+   * forces [N] and moments [N m] (doc/theory/loading-sequence.md §1): the
+   * first check an engineer makes of a model. The dam is a free body loaded
+   * by its weight and the water on its wetted face and held by its support,
+   * the rock through the faces they share (or the fixed truncation where the
+   * dam stands on it, no rock meshed); the joints are inside it and cancel.
+   *
+   * The support's force is computed twice:
+   *  - the reactions, as commercial codes report them: the residual of the
+   *    dam's own equations, r = int B^T sigma dV - f (f its weight and its
+   *    water), summed over the nodes on the support. Every other node is in
+   *    equilibrium to the solver's precision, so the reactions balance the
+   *    loads to round-off (a direct solve) or to the relaxation's tolerance:
+   *    their out of balance is the static solution's equilibrium error;
+   *  - int sigma n dA over the support's faces, from the stress at the
+   *    faces' quadrature points: zero out of balance only for an exact
+   *    stress, so its out of balance measures the stress's discretization
+   *    error, which falls with the mesh.
+   * Moments are taken about the centroid of the support's faces.
    */
   struct StaticResultants
   {
-    dealii::Tensor<1, dim> weight, water, support;
+    dealii::Tensor<1, dim> weight, water, reaction, support_stress;
+    dealii::Tensor<1, dim> weight_moment, water_moment, reaction_moment;
+    dealii::Point<dim>     centroid;
 
-    /// |weight + water + support| / (|weight| + |water|).
+    /// |weight + water + reaction| / (|weight| + |water|).
     double
     out_of_balance() const;
+    /// |weight + water + support_stress| / (|weight| + |water|).
+    double
+    stress_out_of_balance() const;
 
-    /// Lines for the run's log, in MN.
+    /// Above this the reactions' out of balance is warned about: far above
+    /// the round-off of a direct solve (1e-12) and a hundred times the
+    /// dynamic relaxation's default tolerance.
+    static constexpr double warning_threshold = 1e-4;
+
+    /// Lines for the run's log, in MN and MN m.
     void
     print(std::ostream &out) const;
   };

@@ -4,6 +4,8 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <array>
+
 namespace archdam::geometry
 {
   /**
@@ -22,4 +24,10 @@ namespace archdam::geometry
    */
   void
   generate_arch_dam(const ArchDamParameters &p, dealii::Triangulation<3> &tria);
+
+  /// The numbers of solid and water cells generate_arch_dam() makes for @p p,
+  /// counted without making them (a tenth of the index grid when that has
+  /// more than 1e9 cells).
+  std::array<double, 2>
+  arch_dam_cell_count(const ArchDamParameters &p);
 } // namespace archdam::geometry

@@ -35,4 +35,9 @@ namespace archdam::geometry
   /// Fill @p tria with the box model; ids as in doc/theory/conventions.md §4-§5.
   void
   generate_box(const BoxParameters &p, dealii::Triangulation<dim> &tria);
+
+  /// The number of cells generate_box() makes for @p p, counted without
+  /// making them (infinite for a Rock cell size of 0).
+  double
+  box_cell_count(const BoxParameters &p);
 } // namespace archdam::geometry

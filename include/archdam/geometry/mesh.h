@@ -63,6 +63,15 @@ namespace archdam::geometry
    * base/data_files.h), check its cell shapes and ids (mesh_checks.h) and
    * split joints and fluid-solid interfaces (splitter.h).
    */
+  /**
+   * InputError, naming the parameters that set the mesh's size, when the
+   * mesh of @p p (generated, not read) would not fit in this machine's
+   * memory: counted before it is made, with its factorization for a run
+   * that @p solves (elements of @p degree), the mesh alone otherwise.
+   */
+  void
+  check_model_size(const MeshParameters &p, unsigned int degree, bool solves);
+
   void
   build_model_mesh(const MeshParameters       &p,
                    const std::string          &base_directory,

@@ -5,6 +5,7 @@
 #include <archdam/loads/acceleration_record.h>
 
 #include <istream>
+#include <fstream>
 #include <string>
 
 /**
@@ -99,6 +100,11 @@ namespace archdam::loads
    */
   RecordUnits
   record_units(const std::string &name, const std::string &context);
+
+  /// @p filename opened for writing, or InputError saying why it cannot be
+  /// (its folder does not exist, or the system's reason).
+  std::ofstream
+  open_for_writing(const std::string &filename);
 
   /**
    * Write @p record as a PEER .AT2 file (in g, NPTS and DT on line 4 in the

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/output/earlier_results.h>
 #include <archdam/output/recorder.h>
 #include <archdam/physics/solid/materials.h>
 #include <archdam/time/newmark.h>
@@ -23,6 +24,7 @@ namespace archdam::output
     std::string  field_formats   = "vtu, hdf5";
     bool         progress        = true;
     bool         timer_summary   = true;
+    EarlierResults earlier_results = EarlierResults::replace;
 
     void
     add_parameters(dealii::ParameterHandler &prm);

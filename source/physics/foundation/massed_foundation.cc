@@ -46,8 +46,13 @@ namespace archdam::physics::foundation
         if (!transmitting)
           return "";
         std::ostringstream text;
-        text << std::setprecision(4) << "MTF order " << order << ", largest c_a dt / h = "
-             << boundary.largest_courant_number();
+        // Liao's S (doc/theory/foundation.md §6): at most 1 for an undamped
+        // boundary; measured stable up to 1.22 with the dam's Rayleigh damping.
+        const double S = boundary.largest_courant_number();
+        text << std::setprecision(4) << "MTF order " << order << ", largest c_a dt / h = " << S;
+        if (S > 1.)
+          text << " (above 1: stable only with the model's damping, measured up to 1.22; "
+               << "doc/theory/foundation.md §6)";
         return text.str();
       }
 
