@@ -37,6 +37,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stress_envelope_plot  # noqa: E402
@@ -147,15 +148,19 @@ def peak(values):
     return max(values, key=abs) if values else float("nan")
 
 
-def figure(path, draw, title, xlabel, ylabel):
+MESH_NOTES = {"coarse": "coarse mesh, not converged: a quick look",
+              "default": "the case's own mesh (Q2 2 x 2 x 9)"}
+
+
+def figure(path, draw, title, xlabel, ylabel, mesh):
     fig, ax = plt.subplots(figsize=(8, 4.5))
     draw(ax)
-    ax.set_title(title)
+    ax.set_title(f"{title}\n({MESH_NOTES[mesh]})", fontsize=10)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.grid(True, alpha=0.3)
     handles = ax.get_legend_handles_labels()[0]
-    if handles:
+    if len(handles) > 1:  # one curve needs no legend: the title names it
         ax.legend(fontsize=8, ncol=2 if len(handles) > 3 else 1)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
@@ -177,7 +182,7 @@ def draw_all(args, results):
 
         figure(os.path.join(args.figures, "opening_A_B.png"), openings,
                "Joint opening at A (crown joint) and B (quarter-span joint), crest",
-               "time [s]", "opening [mm]")
+               "time [s]", "opening [mm]", args.mesh)
 
     with_c = [c for c in ["reference", "glued"] if results.get(c) and "C.s1 [Pa]" in results[c]["histories"]]
     if with_c:
@@ -189,7 +194,7 @@ def draw_all(args, results):
 
         figure(os.path.join(args.figures, "stress_C_joints.png"), stress,
                "Major principal stress at C (crown block, downstream face near the crest)",
-               "time [s]", "major principal stress [MPa] (tension > 0)")
+               "time [s]", "major principal stress [MPa] (tension > 0)", args.mesh)
 
     water = [c for c in ["reference", "incompressible", "westergaard"] if results.get(c) and results[c]["crest"]]
     if water:
@@ -203,7 +208,7 @@ def draw_all(args, results):
 
         figure(os.path.join(args.figures, "max_opening_water.png"), along_axis,
                "Maximum joint opening at the crest along the dam axis",
-               "joint (0 = left bank)", "maximum opening [mm]")
+               "joint (0 = left bank)", "maximum opening [mm]", args.mesh)
 
     crest_cases = [c for c in CASES if results.get(c) and "crest.ux [m]" in results[c]["histories"]]
     if crest_cases:
@@ -214,25 +219,29 @@ def draw_all(args, results):
 
         figure(os.path.join(args.figures, "crest_displacement.png"), crest,
                "Stream displacement of the crest relative to the dam base, from the static state",
-               "time [s]", "displacement [mm]")
+               "time [s]", "displacement [mm]", args.mesh)
 
     if ref and ref["envelopes"]:
         def envelopes(ax):
             e = ref["envelopes"]
-            for k in sorted(set(int(v) for v in e["joint"])):
+            joints = sorted(set(int(v) for v in e["joint"]))
+            # one colour per joint (13 and more: the default cycle repeats after 10)
+            colours = plt.cm.turbo(np.linspace(0.05, 0.95, len(joints)))
+            for k, colour in zip(joints, colours):
                 rows = [i for i, v in enumerate(e["joint"]) if int(v) == k]
                 ax.plot([1e3 * e["max opening [m]"][i] for i in rows], [e["z [m]"][i] for i in rows],
-                        label=f"joint {k}")
+                        label=f"joint {k}", color=colour)
 
         figure(os.path.join(args.figures, "opening_envelopes.png"), envelopes,
                "Maximum opening over the height of each joint (reference case)",
-               "maximum opening [mm]", "elevation z [m]")
+               "maximum opening [mm]", "elevation z [m]", args.mesh)
 
     for c in ["reference", "glued"]:
         envelope = results.get(c) and os.path.join(results[c]["dir"], "stress_envelope_dynamic.csv")
         if envelope and os.path.exists(envelope):
             png = os.path.join(args.figures, f"stress_envelope_{c}.png")
-            stress_envelope_plot.draw(envelope, png, f"Largest major principal stress, {LABELS[c]}")
+            stress_envelope_plot.draw(envelope, png, f"Largest major principal stress, {LABELS[c]} "
+                                      f"({MESH_NOTES[args.mesh]})")
             print("wrote", png)
 
     path = os.path.join(args.figures, "comparison.csv")

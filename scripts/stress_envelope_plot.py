@@ -30,7 +30,8 @@ import numpy as np
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.tri as mtri  # noqa: E402
-from matplotlib.colors import TwoSlopeNorm  # noqa: E402
+from matplotlib.colors import TwoSlopeNorm
+from matplotlib.ticker import MaxNLocator
 
 
 def read(csv_path):
@@ -59,7 +60,11 @@ def draw(csv_path, png_path, title, radius=None):
         raise SystemExit(f"{csv_path}: no upstream or downstream points")
     low, high = min(values), max(values)
     norm = TwoSlopeNorm(0.0, min(low, -1e-6), max(high, 1e-6))
-    levels = np.linspace(low, high, 22) if high > low else np.linspace(low - 1, high + 1, 3)
+    # contour levels and colour-bar ticks at round numbers (1, 2 or 5 times
+    # a power of ten) that cover the values
+    ticks = MaxNLocator(nbins=10, steps=[1, 2, 5, 10]).tick_values(low, high)
+    levels = (np.linspace(ticks[0], ticks[-1], 2 * (len(ticks) - 1) + 1) if high > low
+              else np.linspace(low - 1, high + 1, 3))
 
     fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
     z_all = [p[2] for face, _ in panels for p in faces.get(face, [])]
@@ -96,8 +101,8 @@ def draw(csv_path, png_path, title, radius=None):
     for ax in axes:
         ax.set_ylabel("z [m]")
     if mappable is not None:
-        fig.colorbar(mappable, ax=axes, shrink=0.85, format="%.3g",
-                     label="largest major principal stress s1 [MPa] (tension +)")
+        fig.colorbar(mappable, ax=axes, shrink=0.85, ticks=ticks if high > low else None,
+                     format="%g", label="largest major principal stress s1 [MPa] (tension +)")
     fig.suptitle(title)
     fig.savefig(png_path, dpi=120)
     plt.close(fig)

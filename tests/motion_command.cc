@@ -78,6 +78,14 @@ main(int argc, char **argv)
   std::filesystem::copy_file(data + "RSN77_SFERN_PUL164.AT2", pacoima,
                              std::filesystem::copy_options::overwrite_existing);
 
+  {
+    const char        *args[] = {"archdam-motion", "--version"};
+    std::ostringstream out, err;
+    const int          code = run_motion_command(2, args, out, err);
+    log() << "* --version: exit code " << code << ", names the program: "
+          << (out.str().rfind("archdam-motion ", 0) == 0 ? "yes" : "NO") << std::endl;
+  }
+
   log() << "Errors" << std::endl;
   run("no command", {});
   run("unknown command", {"plot", pacoima});
@@ -105,6 +113,10 @@ main(int argc, char **argv)
   run("envelope longer than the motion", {"generate", "--duration", "10"});
   run("T_g below 0.1 s", {"generate", "--tg", "0.05"});
   run("spectrum damping 1.5", {"inspect", pacoima, "--spectrum-damping", "1.5"});
+  run("a generated motion of 1e9 s", {"generate", "--duration", "1e9"});
+  run("a generated motion of 1e5 s", {"generate", "--duration", "1e5"});
+  run("an output in a folder that does not exist",
+      {"inspect", pacoima, "--csv", "no_such_folder/a.csv"});
   std::ofstream("motion_irregular.txt") << "0 0.1\n0.01 0.2\n0.025 0.1\n0.03 0\n";
   run("AT2 from a record with irregular times",
       {"convert", "motion_irregular.txt", "--at2", "a.AT2"});

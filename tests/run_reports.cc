@@ -23,8 +23,9 @@
 //    the envelope is exp(-0.3) = 0.74 at the end), an End time that is no
 //    whole number of steps (0.043 s at 0.01 s ends at 0.04 s), a step coarser
 //    than the record's sampling (0.01 s on 0.005 s), a concrete density of
-//    24000 kg/m^3 (a unit weight) and a modulus of 5e8 Pa (below any
-//    concrete's 1 GPa); a run
+//    24000 kg/m^3 (a unit weight), a modulus of 5e8 Pa (below any
+//    concrete's 1 GPa) and a first mode outside the frequencies of the
+//    damping ratio, whose damping ratio summary.json gives; a run
 //    without any has no warning.
 // D. archdam-motion reads a case the way archdam does: `case` of a variant in
 //    a subfolder that includes its base one folder up, run from another
@@ -319,6 +320,30 @@ namespace
           "a concrete density of 24000 kg/m^3", "is it a unit weight in N/m^3?");
     check("soft", column("soft", short_record) + concrete("Young's modulus = 5e8"),
           "a concrete modulus of 5e8 Pa", "is it in kPa or MPa?");
+    // The damping ratio at the modal stage's first mode (item 16): zeta =
+    // alpha / (2 omega) + beta omega / 2 with the Rayleigh coefficients the
+    // run reports; the column's first mode (2.55 Hz) lies below First
+    // frequency = 20 Hz, so it is damped by 28 %, not the 5 % asked for
+    // between 20 and 50 Hz, and is warned about.
+    const std::string modal = column("modal", short_record) +
+                              "subsection Analysis\n  set Stages = static, modal, dynamic\nend\n"
+                              "subsection Modal analysis\n  set Number of modes = 2\nend\n"
+                              "subsection Damping\n  set First frequency = 20\n"
+                              "  set Second frequency = 50\nend\n";
+    check("modal", modal, "the first mode outside First - Second frequency",
+          "outside Damping/First frequency - Second frequency");
+    {
+      const auto   s     = summary("modal");
+      const double f     = number(s, {"modal", "mode 1", "frequency [Hz]"});
+      const double omega = 2 * M_PI * f;
+      const double alpha = number(s, {"dynamic", "rayleigh alpha [s^-1]"});
+      const double beta  = number(s, {"dynamic", "rayleigh beta [s]"});
+      archdam::testing::check_relative(
+        "  summary.json: the damping ratio at the first mode against alpha / (2 omega) + beta "
+        "omega / 2",
+        number(s, {"dynamic", "damping ratio at the first mode"}),
+        alpha / (2 * omega) + beta * omega / 2, 1e-10);
+    }
   }
 
   /// Run archdam on @p file with the override @p assignment; its exit code
