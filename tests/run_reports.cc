@@ -24,8 +24,10 @@
 //    whole number of steps (0.043 s at 0.01 s ends at 0.04 s), a step coarser
 //    than the record's sampling (0.01 s on 0.005 s), a concrete density of
 //    24000 kg/m^3 (a unit weight), a modulus of 5e8 Pa (below any
-//    concrete's 1 GPa) and a first mode outside the frequencies of the
-//    damping ratio, whose damping ratio summary.json gives; a run
+//    concrete's 1 GPa), g = 12 m/s^2, a Westergaard water level of 20 m
+//    beside a reservoir mesh up to 25 m, and a first mode outside the
+//    frequencies of the damping ratio, whose damping ratio summary.json
+//    gives; a run
 //    without any has no warning.
 // D. archdam-motion reads a case the way archdam does: `case` of a variant in
 //    a subfolder that includes its base one folder up, run from another
@@ -320,6 +322,18 @@ namespace
           "a concrete density of 24000 kg/m^3", "is it a unit weight in N/m^3?");
     check("soft", column("soft", short_record) + concrete("Young's modulus = 5e8"),
           "a concrete modulus of 5e8 Pa", "is it in kPa or MPa?");
+    check("heavy", column("heavy", short_record) +
+                     "subsection Static loads\n  set Gravitational acceleration = 12\nend\n",
+          "g = 12 m/s^2", "is not the Earth's (9.81 m/s^2)");
+    // Westergaard's added mass at a level other than the reservoir mesh's
+    // (the Gmsh example's water reaches z = 25 m): the static stage alone.
+    check("level",
+          case_text::gmsh_example_mesh() + case_text::quiet_output("level", 0) +
+            "subsection Analysis\n  set Stages = static\nend\n"
+            "subsection Reservoir\n  set Model = westergaard\n  set Water level from mesh = false\n"
+            "  set Water level = 20\nend\n",
+          "a Westergaard water level of 20 m beside a reservoir mesh up to 25 m",
+          "but the reservoir's mesh reaches z = 25 m");
     // The damping ratio at the modal stage's first mode (item 16): zeta =
     // alpha / (2 omega) + beta omega / 2 with the Rayleigh coefficients the
     // run reports; the column's first mode (2.55 Hz) lies below First
