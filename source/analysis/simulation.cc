@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <limits>
 #include <regex>
 #include <sstream>
 
@@ -169,14 +168,9 @@ namespace archdam::analysis
       if (!text.str().empty())
         warn(text.str());
     };
-    bool   rock = false;
-    double top  = -std::numeric_limits<double>::max(); // of the water cells
+    bool rock = false;
     for (const auto &cell : model().triangulation().active_cell_iterators())
-      if (cell->material_id() == ids::rock)
-        rock = true;
-      else if (cell->material_id() == ids::water)
-        for (const unsigned int v : cell->vertex_indices())
-          top = std::max(top, cell->vertex(v)[dim - 1]);
+      rock = rock || cell->material_id() == ids::rock;
     if (p.static_loads.gravity && std::abs(p.static_loads.g - 9.81) > 1.)
       {
         std::ostringstream text;
@@ -193,12 +187,12 @@ namespace archdam::analysis
     namespace reservoir = physics::reservoir;
     if (p.reservoir.model == reservoir::Model::westergaard && !p.reservoir.level_from_mesh)
       {
-        if (top > -std::numeric_limits<double>::max() &&
-            std::abs(top - p.reservoir.water_level) > 1e-6 * std::max(1., std::abs(top)))
+        const auto top = reservoir::top_of_water(model().triangulation());
+        if (top && std::abs(*top - p.reservoir.water_level) > 1e-6 * std::max(1., std::abs(*top)))
           {
             std::ostringstream text;
             text << "Reservoir/Water level = " << p.reservoir.water_level
-                 << " m, but the reservoir's mesh reaches z = " << top
+                 << " m, but the reservoir's mesh reaches z = " << *top
                  << " m: Westergaard's added mass takes the level given (set 'Water level "
                  << "from mesh' to take the mesh's).";
             warn(text.str());

@@ -81,15 +81,23 @@ namespace archdam::physics::reservoir
 
 namespace archdam::physics::reservoir
 {
-  double
-  water_level(const ReservoirParameters &p, const dealii::Triangulation<dim> &mesh)
+  std::optional<double>
+  top_of_water(const dealii::Triangulation<dim> &mesh)
   {
-    double top = -std::numeric_limits<double>::max();
+    std::optional<double> top;
     for (const auto &cell : mesh.active_cell_iterators())
       if (cell->material_id() == ids::water)
         for (const unsigned int v : cell->vertex_indices())
-          top = std::max(top, cell->vertex(v)[dim - 1]);
-    const bool has_water = top > -std::numeric_limits<double>::max();
+          top = std::max(top.value_or(cell->vertex(v)[dim - 1]), cell->vertex(v)[dim - 1]);
+    return top;
+  }
+
+  double
+  water_level(const ReservoirParameters &p, const dealii::Triangulation<dim> &mesh)
+  {
+    const std::optional<double> water_top = top_of_water(mesh);
+    const bool                  has_water = water_top.has_value();
+    const double                top       = water_top.value_or(0.);
     if (p.model != Model::none && !has_water)
       throw InputError("Reservoir/Model = " + selection_name(p.model, model_names()) +
                        " needs water cells (material id 2) in front of the dam, and the "
@@ -126,6 +134,6 @@ namespace archdam::physics::reservoir
             throw InputError(text.str());
           }
       }
-    return p.level_from_mesh ? top : p.water_level;
+    return p.level_from_mesh && has_water ? top : p.water_level;
   }
 } // namespace archdam::physics::reservoir

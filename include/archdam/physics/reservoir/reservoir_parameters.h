@@ -4,6 +4,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <optional>
 #include <string>
 
 namespace archdam::physics::reservoir
@@ -96,4 +97,9 @@ namespace archdam::physics::reservoir
   /// a level other than the top of its water cells.
   double
   water_level(const ReservoirParameters &p, const dealii::Triangulation<dim> &mesh);
+
+  /// The top of the water cells (material id 2) of @p mesh [m], or nothing
+  /// when it has none.
+  std::optional<double>
+  top_of_water(const dealii::Triangulation<dim> &mesh);
 } // namespace archdam::physics::reservoir
