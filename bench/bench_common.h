@@ -20,6 +20,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -29,6 +30,32 @@
 
 namespace archdam::bench
 {
+  /// The case file of a benchmark run on a case (default @p file) and its
+  /// `--set "Section/Name=value"` overrides from the command line; every
+  /// other option goes to @p option, which takes its value from argv[++i]
+  /// and returns false for an option it does not know (then taken as the
+  /// case file).
+  struct CaseArguments
+  {
+    std::string              file;
+    std::vector<std::string> overrides;
+  };
+  inline CaseArguments
+  case_arguments(const int argc, char **argv, const std::string &file,
+                 const std::function<bool(const std::string &, int &)> &option = {})
+  {
+    CaseArguments c{file, {}};
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string a = argv[i];
+        if (a == "--set" && i + 1 < argc)
+          c.overrides.push_back(argv[++i]);
+        else if (!(option && i + 1 < argc && option(a, i)))
+          c.file = a;
+      }
+    return c;
+  }
+
   /// The cells of the box model (the dam is always 10 x 40 x 30 m on 30 m of rock).
   struct BoxSize
   {

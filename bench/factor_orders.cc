@@ -153,24 +153,20 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::string              file = "prm/paper_235m_dam.prm";
-  std::vector<std::string> overrides;
-  unsigned int             rounds = 1, solves = 5;
-  std::vector<double>      low_rank = {1e-10, 1e-8, 1e-6, 1e-4};
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string a = argv[i];
-      if (a == "--set" && i + 1 < argc)
-        overrides.push_back(argv[++i]);
-      else if (a == "--rounds" && i + 1 < argc)
+  unsigned int        rounds = 1, solves = 5;
+  std::vector<double> low_rank = {1e-10, 1e-8, 1e-6, 1e-4};
+  const auto [file, overrides] = bench::case_arguments(
+    argc, argv, "prm/paper_235m_dam.prm", [&](const std::string &a, int &i) {
+      if (a == "--rounds")
         rounds = std::stoi(argv[++i]);
-      else if (a == "--solves" && i + 1 < argc)
+      else if (a == "--solves")
         solves = std::stoi(argv[++i]);
-      else if (a == "--low-rank" && i + 1 < argc)
+      else if (a == "--low-rank")
         low_rank = tolerances(argv[++i]);
       else
-        file = a;
-    }
+        return false;
+      return true;
+    });
   auto &out = bench::screen();
 
   const Parameters     p = read_parameters(file, overrides);

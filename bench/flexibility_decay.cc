@@ -51,16 +51,7 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  std::string              file = "prm/paper_235m_dam.prm";
-  std::vector<std::string> overrides;
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string a = argv[i];
-      if (a == "--set" && i + 1 < argc)
-        overrides.push_back(argv[++i]);
-      else
-        file = a;
-    }
+  const auto [file, overrides] = bench::case_arguments(argc, argv, "prm/paper_235m_dam.prm");
   auto &out = bench::screen();
 
   const Parameters     p = read_parameters(file, overrides);
