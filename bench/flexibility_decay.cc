@@ -3,7 +3,10 @@
 // problem's matrix, doc/theory/joints.md §4), decays with the distance
 // between two pairs, on the case's own mesh.
 //
-//   bench_flexibility_decay [CASE.prm] [--set Section/Name=value ...]
+//   bench_flexibility_decay [CASE.prm] [--static] [--set Section/Name=value ...]
+//
+// With --static, W = B K^{-1} B^T with the static stage's K (with the water's
+// rows when the case has water), where no mass makes it local.
 //
 // The case (default prm/paper_235m_dam.prm: Q2 2 x 2 x 9, compressible
 // water, massed rock, dt = 5 ms) is set up as the dynamic stage sets it up
@@ -19,6 +22,8 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/joints/joint_solver.h>
 #include <archdam/parameters/parameters.h>
+#include <archdam/physics/reservoir/coupled_system.h>
+#include <archdam/time/factorized_operator.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
@@ -51,7 +56,12 @@ int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto [file, overrides] = bench::case_arguments(argc, argv, "prm/paper_235m_dam.prm");
+  bool static_stage = false;
+  const auto [file, overrides] =
+    bench::case_arguments(argc, argv, "prm/paper_235m_dam.prm", [&](const std::string &a, int &) {
+      static_stage = static_stage || a == "--static";
+      return a == "--static";
+    });
   auto &out = bench::screen();
 
   const Parameters     p = read_parameters(file, overrides);
@@ -64,14 +74,29 @@ main(int argc, char **argv)
   out << file << ": " << model.space().dof_handler.n_dofs() << " DOFs, " << pairs.size()
       << " node pairs; setup " << std::setprecision(3) << clock.wall_time() << " s\n";
 
+  // The dynamic stage's Kbar (factorized as the stage factorizes it), or the
+  // static stage's K (plainly: W then comes column by column).
   clock.restart();
-  const auto integrator = sim.make_integrator();
-  out << "factorization of Kbar: " << clock.wall_time() << " s\n";
-  // The mixed solver builds W on its first solve (from the factor's Schur
-  // complement when it is condensed on the pairs, as the case's is): one
-  // solve of an unloaded step.
-  joints::MixedJointSolver solver(p.joints, pairs, integrator->displacement_factor(),
-                                  integrator->effective_factor());
+  std::unique_ptr<time::NewmarkIntegrator> integrator;
+  SparseMatrix                             with_water;
+  time::FactorizedOperator                 static_factor;
+  if (static_stage)
+    {
+      if (model.fluid())
+        physics::reservoir::linear_combination(with_water, {{1., &model.stiffness()},
+                                                            {1., &model.fluid()->Q},
+                                                            {1., &model.fluid()->G}});
+      static_factor.factorize(model.fluid() ? with_water : model.stiffness(), true);
+    }
+  else
+    integrator = sim.make_integrator();
+  out << "factorization of " << (static_stage ? "K" : "Kbar") << ": " << clock.wall_time()
+      << " s\n";
+  // The mixed solver builds W on its first solve: one solve of an unloaded
+  // step.
+  joints::MixedJointSolver solver(p.joints, pairs,
+                                  static_stage ? 1. : integrator->displacement_factor(),
+                                  static_stage ? static_factor : integrator->effective_factor());
   Vector r, x;
   model.space().reinit(r);
   model.space().reinit(x);
