@@ -11,13 +11,20 @@
 # q2-229 is the case's mesh, 1,170 node pairs). No checkpoints: writing one starts the contact problem's
 # LU anew (doc/theory/joints.md §6), at another step in each run.
 #
-# usage: bash bench/contact_builds.sh FIRST_BUILD SECOND_BUILD [OUTPUT_DIR] [END_TIME] [MESH]
+# Settings after MESH (--set "S/P=V") go to the first run alone: with the
+# same build twice, an A/B of a setting in one binary (the former path
+# first).
+#
+# usage: bash bench/contact_builds.sh FIRST_BUILD SECOND_BUILD [OUTPUT_DIR] [END_TIME] [MESH] [--set "S/P=V"]...
 set -euo pipefail
 first=$(realpath "$1")
 second=$(realpath "$2")
 out=$(realpath -m "${3:-contact_builds}")
 end=${4:-3.5}
 mesh=${5:-production}
+shift $(( $# < 5 ? $# : 5 ))
+first_only=("$@")
+second_only=()
 cd "$(dirname "$0")/.."
 mapfile -t settings < <(/usr/bin/python3 - "$end" "$mesh" <<'EOF'
 import importlib.util, sys
@@ -33,8 +40,9 @@ for s in "${settings[@]}"; do arguments+=(--set "$s"); done
 mkdir -p "$out"
 for which in first second; do
   build=${!which}
+  only="${which}_only[@]"
   # the build's own library, whatever the executable's run path names
-  LD_LIBRARY_PATH="$build" OPENBLAS_NUM_THREADS=1 "$build/archdam" prm/paper_235m_dam.prm "${arguments[@]}" \
+  LD_LIBRARY_PATH="$build" OPENBLAS_NUM_THREADS=1 "$build/archdam" prm/paper_235m_dam.prm "${arguments[@]}" "${!only}" \
     --set "Output/Directory=$out/$which" --set "Output/Progress=false" \
     --set "Checkpoints/Wall-time interval (s)=0" > "$out/$which.log" 2>&1 &
 done
@@ -56,8 +64,9 @@ for key in ["dynamic/time per step [s]/contact problem", "dynamic/time per step 
             "dynamic/wall time per step [s]"]:
     print(f"{key}: first {a[key]:.4g}, second {b[key]:.4g}, second / first {b[key] / a[key]:.3f}")
 for key in ["dynamic/contact problem/factorizations", "dynamic/contact problem/updated solves",
+            "dynamic/contact problem/handed over",
             "dynamic/contact iterations per step/average"]:
-    print(f"{key}: first {a[key]:.6g}, second {b[key]:.6g}")
+    print(f"{key}: first {a.get(key, 0):.6g}, second {b.get(key, 0):.6g}")
 results = [k for k in a if (k.startswith("peaks/") and k.endswith("/value"))
            or (k.startswith("dynamic/joints/joint ") and k.endswith("peak opening [m]"))
            or k.startswith("energy balance/")]

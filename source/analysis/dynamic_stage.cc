@@ -482,6 +482,8 @@ namespace archdam::analysis
             summary.set("dynamic/time to build the flexibility matrix [s]", mixed->build_time);
             summary.set("dynamic/contact problem/factorizations", mixed->factorizations);
             summary.set("dynamic/contact problem/updated solves", mixed->updated_solves);
+            if (p.joints.contact_problem == joints::ContactProblem::joint_by_joint)
+              summary.set("dynamic/contact problem/handed over", mixed->handed_over);
           }
         if (p.joints.corrects_positions())
           {
@@ -528,6 +530,8 @@ namespace archdam::analysis
                              &boundary->damping_columns}));
     if (const auto *condensed = integrator ? integrator->effective_factor().condensed() : nullptr)
       summary.set(s + "factorization", 1e-6 * condensed->statistics().memory);
+    if (auto mixed = dynamic_cast<const joints::MixedJointSolver *>(joint_solver.get()))
+      summary.set(s + "contact problem", 1e-6 * static_cast<double>(mixed->memory()));
     // The largest process's peak, and the sum of the processes' peaks.
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);

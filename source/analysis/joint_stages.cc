@@ -53,8 +53,13 @@ namespace archdam::analysis
                                        const time::FactorizedOperator &stiffness_factor,
                                        const Vector                   &rhs)
   {
+    // K alone couples every pair of a joint, and neighbouring joints
+    // strongly, so that joint by joint would need many sweeps
+    // (doc/theory/joints.md §12): the one solve takes all pairs at once.
+    joints::JointParameters static_joints = p.joints;
+    static_joints.contact_problem         = joints::ContactProblem::all_pairs_at_once;
     joint_solver =
-      joints::make_joint_solver(p.joints, *model().joint_pairs(), 1., stiffness, stiffness_factor);
+      joints::make_joint_solver(static_joints, *model().joint_pairs(), 1., stiffness, stiffness_factor);
     if (p.joints.grouting == joints::Grouting::after_self_weight)
       {
         solve_ungrouted_self_weight(stiffness_factor, u_static);
@@ -110,6 +115,9 @@ namespace archdam::analysis
     // they put in when pairs open, and damps the high modes.
     joints::JointParameters relaxation_joints = p.joints;
     relaxation_joints.contact_in_time         = joints::ContactInTime::trapezoidal;
+    // its long step (10 ms) couples the joints more than the dynamic
+    // stage's, and the sweeps would not pay (doc/theory/joints.md §12)
+    relaxation_joints.contact_problem = joints::ContactProblem::all_pairs_at_once;
     time::NewmarkParameters scheme;
     scheme.time_step   = r.time_step;
     scheme.beta1       = 0.75;

@@ -29,6 +29,19 @@ namespace archdam::joints
                   "keeps: all joints = the exact C; neighbouring joints = only "
                   "the coupling between pairs of the same or adjacent joints "
                   "(the paper's sparse approximation).");
+    add_selection(prm, "Contact problem", contact_problem, contact_problem_names(),
+                  "How the mixed method solves the contact problem of a dynamic "
+                  "step on the node pairs (doc/theory/joints.md §6 and §12): all pairs at "
+                  "once = one active set on the system of every pair (a dense LU of "
+                  "three unknowns per pair, kept between solves; the default); joint by "
+                  "joint = block Gauss-Seidel over the joints, red-black, each joint's "
+                  "pairs solved together by the active set on their own small system, "
+                  "until the law holds at every pair with the exact flexibility (the "
+                  "joints of a colour shared among the MPI processes; a step that does "
+                  "not settle so is solved all pairs at once). Joint by joint converges "
+                  "slowly on the reference case (about 0.6 per sweep: a joint's load "
+                  "moves its blocks as a whole) and is slower there; it is the base of "
+                  "a two-level solver. The static stage solves all pairs at once.");
     add_selection(prm, "Mixed method solves", mixed_solves, mixed_solves_names(),
                   "How a solve of the mixed method reaches the pairs (doc/theory/joints.md "
                   "§4): condensed on the pairs = the stage's matrix factorized by "

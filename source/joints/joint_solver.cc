@@ -102,23 +102,27 @@ namespace archdam::joints
   }
 
   double
+  JointSolver::law_residual(const unsigned int i) const
+  {
+    const double r =
+      state[i] == PairState::separation ? std::max(0., -approach(i)) : std::abs(closure(i));
+    if (state[i] != PairState::stick)
+      return r;
+    return std::max(r, std::hypot(w[dim * i + 1] - target[dim * i + 1],
+                                  w[dim * i + 2] - target[dim * i + 2]));
+  }
+
+  double
   JointSolver::gap_residual(unsigned int &worst) const
   {
     double largest = 0.;
     worst          = 0;
     for (unsigned int i = 0; i < pairs.size(); ++i)
-      {
-        double r =
-          state[i] == PairState::separation ? std::max(0., -approach(i)) : std::abs(closure(i));
-        if (state[i] == PairState::stick)
-          r = std::max(r, std::hypot(w[dim * i + 1] - target[dim * i + 1],
-                                     w[dim * i + 2] - target[dim * i + 2]));
-        if (r > largest)
-          {
-            largest = r;
-            worst   = i;
-          }
-      }
+      if (const double r = law_residual(i); r > largest)
+        {
+          largest = r;
+          worst   = i;
+        }
     return largest;
   }
 

@@ -1,4 +1,3 @@
-#include <archdam/base/petsc_check.h>
 #include <archdam/base/wall_time.h>
 #include <archdam/joints/joint_solver.h>
 
@@ -15,132 +14,50 @@ namespace archdam::joints
 {
   using namespace dealii;
 
-  namespace
-  {
-    /// The paper's sparse approximation of C: the coupling of pairs on
-    /// joints more than one apart dropped.
-    void
-    keep_neighbouring_joints(const NodePairs &pairs, std::vector<double> &C)
-    {
-      const unsigned int m = dim * pairs.size();
-      for (unsigned int j = 0; j < m; ++j)
-        for (unsigned int i = 0; i < m; ++i)
-          if (std::abs(static_cast<int>(pairs[i / dim].joint) -
-                       static_cast<int>(pairs[j / dim].joint)) > 1)
-            C[static_cast<std::size_t>(j) * m + i] = 0.;
-    }
-  } // namespace
-
-  std::vector<double>
-  flexibility_matrix(const NodePairs &pairs, const time::FactorizedOperator &A_factor,
-                     const Vector &layout, const unsigned int block_size,
-                     const bool neighbours_only)
-  {
-    const unsigned int m        = dim * pairs.size();
-    const auto         range    = layout.local_range();
-    const auto         n_local  = range.second - range.first;
-    const auto         is_owned = [&](const types::global_dof_index d) {
-      return d >= range.first && d < range.second;
-    };
-    MPI_Comm comm = pairs.communicator();
-    std::vector<double> C(static_cast<std::size_t>(m) * m, 0.);
-
-    for (unsigned int start = 0; start < m; start += block_size)
-      {
-        const unsigned int nb = std::min(block_size, m - start);
-        // Right-hand sides B^T e_j, j = start ... start + nb - 1.
-        Mat rhs, solution;
-        petsc_check(MatCreateDense(comm, n_local, PETSC_DECIDE, layout.size(), nb, nullptr, &rhs));
-        PetscScalar *a;
-        petsc_check(MatDenseGetArray(rhs, &a));
-        std::fill(a, a + n_local * nb, 0.);
-        for (unsigned int j = 0; j < nb; ++j)
-          pairs[(start + j) / dim].for_each_B_entry((start + j) % dim,
-                       [&](const types::global_dof_index d, const double v) {
-                         if (is_owned(d))
-                           a[j * n_local + (d - range.first)] += v;
-                       });
-        petsc_check(MatDenseRestoreArray(rhs, &a));
-        petsc_check(MatAssemblyBegin(rhs, MAT_FINAL_ASSEMBLY));
-        petsc_check(MatAssemblyEnd(rhs, MAT_FINAL_ASSEMBLY));
-        petsc_check(MatDuplicate(rhs, MAT_DO_NOT_COPY_VALUES, &solution));
-        A_factor.solve(solution, rhs);
-
-        // Columns of C: B A^{-1} B^T e_j, the owners' parts summed over ranks.
-        std::vector<double> block(static_cast<std::size_t>(m) * nb, 0.);
-        const PetscScalar  *x;
-        petsc_check(MatDenseGetArrayRead(solution, &x));
-        for (unsigned int j = 0; j < nb; ++j)
-          for (unsigned int i = 0; i < pairs.size(); ++i)
-            for (unsigned int k = 0; k < dim; ++k)
-              pairs[i].for_each_B_entry(k, [&](const types::global_dof_index d, const double v) {
-                if (is_owned(d))
-                  block[j * m + dim * i + k] += v * x[j * n_local + (d - range.first)];
-              });
-        petsc_check(MatDenseRestoreArrayRead(solution, &x));
-        petsc_check(MatDestroy(&rhs));
-        petsc_check(MatDestroy(&solution));
-        Utilities::MPI::sum(block, comm, block);
-        std::copy(block.begin(), block.end(), C.begin() + static_cast<std::size_t>(start) * m);
-      }
-
-    if (neighbours_only)
-      keep_neighbouring_joints(pairs, C);
-    return C;
-  }
-
-  std::vector<double>
-  augmentation_of(const std::vector<double> &C, const double h)
-  {
-    const unsigned int  m = std::lround(std::sqrt(static_cast<double>(C.size())));
-    std::vector<double> r(m / dim);
-    for (unsigned int i = 0; i < r.size(); ++i)
-      {
-        const auto diagonal = [&](const unsigned int k) {
-          return C[static_cast<std::size_t>(dim * i + k) * m + dim * i + k];
-        };
-        r[i] = 2. / (h * (diagonal(1) + diagonal(2)));
-      }
-    return r;
-  }
-
   MixedJointSolver::MixedJointSolver(const JointParameters &p, const NodePairs &pairs,
                                      const double h, const time::FactorizedOperator &A_factor)
     : JointSolver(p, pairs, h)
     , A_factor(A_factor)
-  {}
-
-  void
-  MixedJointSolver::build_from_schur_complement(const time::CondensedFactorization &condensed)
+    , all_pairs([&] {
+      std::vector<unsigned int> all(pairs.size());
+      std::iota(all.begin(), all.end(), 0u);
+      return all;
+    }())
   {
-    const unsigned int m     = dim * pairs.size();
-    const auto        &gamma = condensed.interface();
-    B_interface.assign(m, {});
-    for (unsigned int j = 0; j < m; ++j)
-      pairs[j / dim].for_each_B_entry(j % dim, [&](const types::global_dof_index d,
-                                                   const double v) {
-        const auto g = std::lower_bound(gamma.begin(), gamma.end(), d) - gamma.begin();
-        AssertThrow(g < static_cast<long>(gamma.size()) && gamma[g] == d,
-                    ExcMessage("The factorization is condensed on other DOFs than the "
-                               "node pairs'."));
-        B_interface[j].emplace_back(static_cast<unsigned int>(g), v);
-      });
+    if (p.contact_problem != ContactProblem::joint_by_joint)
+      return;
+    std::vector<std::vector<unsigned int>> of_joint;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        if (pairs[i].joint >= of_joint.size())
+          of_joint.resize(pairs[i].joint + 1);
+        of_joint[pairs[i].joint].push_back(i);
+      }
+    std::vector<unsigned int> joint_of_system;
+    for (unsigned int J = 0; J < of_joint.size(); ++J)
+      if (!of_joint[J].empty())
+        {
+          by_joint.emplace_back(of_joint[J]);
+          joint_of_system.push_back(J);
+        }
+    // a joint's change moves its own and its neighbouring joints' pairs
+    // within a sweep (doc/theory/joints.md §12)
+    reach.resize(by_joint.size());
+    for (unsigned int a = 0; a < by_joint.size(); ++a)
+      for (unsigned int b = 0; b < by_joint.size(); ++b)
+        if (std::abs(static_cast<int>(joint_of_system[a]) -
+                     static_cast<int>(joint_of_system[b])) <= 1)
+          reach[a].push_back(b);
+  }
 
-    // G = S^{-1} B^T, C = B G (doc/theory/joints.md §4: C = B A^{-1} B^T, since the
-    // load B^T f lies on the interface).
-    const unsigned int k = gamma.size();
-    G.reinit(k, m);
-    for (unsigned int j = 0; j < m; ++j)
-      for (const auto &[g, v] : B_interface[j])
-        G(g, j) += v;
-    condensed.solve_interface(G);
-    C.assign(static_cast<std::size_t>(m) * m, 0.);
-    for (unsigned int j = 0; j < m; ++j)
-      for (unsigned int i = 0; i < m; ++i)
-        for (const auto &[g, v] : B_interface[i])
-          C[static_cast<std::size_t>(j) * m + i] += v * G(g, j);
-    if (p.coupling == Coupling::neighbouring_joints)
-      keep_neighbouring_joints(pairs, C);
+  std::size_t
+  MixedJointSolver::memory() const
+  {
+    std::size_t bytes = sizeof(double) * (C.size() + C_rows.size() + G.m() * G.n());
+    bytes += all_pairs.memory();
+    for (const PairSystem &system : by_joint)
+      bytes += system.memory();
+    return bytes;
   }
 
   void
@@ -162,7 +79,7 @@ namespace archdam::joints
   }
 
   void
-  MixedJointSolver::solve_with_fixed_states()
+  MixedJointSolver::solve_with_fixed_states(PairSystem &system, const std::vector<double> &s_of)
   {
     // The law with the states fixed and the slip directions linearized is
     // linear in the pair forces (doc/theory/joints.md §6): stick: w =
@@ -176,42 +93,21 @@ namespace archdam::joints
     // slip) this is the fixed-direction law f_t = (c A - mu f_xi) d; with
     // kappa > 0 the direction converges with the forces instead of by a
     // damped fixed-point iteration, which needed hundreds of iterations when
-    // the slip increment is small against tau / r.
-    //
-    // One row per pair unknown (3 n_pairs, the open pairs' rows f = 0), so
-    // that a change of a few pairs' states or slip directions changes a few
-    // rows: the LU of the system as it was at its last factorization (the
-    // base A0) is kept, and the rows R that changed since are taken in by
-    // the Sherman-Morrison-Woodbury formula (doc/theory/joints.md §6):
-    //   A = A0 + E_R dR,  Z = A0^{-1} E_R (kept per row while A0 is),
-    //   x = y - Z T^{-1} t,  y = A0^{-1} b,  T = I + dR Z = A_R Z,
-    //   t = dR y = A_R y - b_R
-    // (A_R the new rows; A0_R Z = I and A0_R y = b_R). A0 is refactorized
-    // when R grows beyond max_update_rows.
+    // the slip increment is small against tau / r. One row per pair unknown
+    // (the open pairs' rows f = 0), so that a change of a few pairs' states
+    // or slip directions changes a few rows of the kept LU (PairSystem).
     const unsigned int m = dim * pairs.size();
-    if (m == 0)
+    const auto        &own = system.pairs();
+    if (own.empty())
       return;
-    // (h C)(row, j), from C by rows.
-    const double hc          = contact_h();
-    const auto   flexibility = [&](const unsigned int j, const unsigned int row) {
-      return hc * C_rows[static_cast<std::size_t>(row) * m + j];
-    };
-    // Row dim i + k of the system from the pair's current state, in parts:
-    //   row = sum_l flex[l] (h C)(dim i + l, .) + sum_l own[l] e_{dim i + l},
-    // rows of h C with coefficients plus entries on the pair's own unknowns,
-    // and its right-hand side.
-    struct RowParts
-    {
-      std::array<double, dim> flex{}, own{};
-      double                  rhs = 0.;
-    };
-    const auto row_parts = [&](const unsigned int i, const unsigned int k) {
+    const double hc       = contact_h();
+    const auto   row_of   = [&](const unsigned int i, const unsigned int k) {
       const unsigned int r_ik = dim * i + k;
-      RowParts           parts;
+      SystemRow          parts;
       if (state[i] == PairState::separation)
         {
           // f = 0, scaled like the flexibility rows (metres) for the pivoting
-          parts.own[k] = flexibility(r_ik, r_ik);
+          parts.own[k] = hc * C_rows[static_cast<std::size_t>(r_ik) * m + r_ik];
           return parts;
         }
       if (k > 0 && state[i] == PairState::slip)
@@ -230,26 +126,16 @@ namespace archdam::joints
             {
               parts.flex[l] = kappa * P(k, l);
               parts.own[l]  = ((k == l ? 1. : 0.) - kappa * P(k, l)) / r;
-              parts.rhs += kappa * P(k, l) * (s[dim * i + l] - target[dim * i + l]);
+              parts.rhs += kappa * P(k, l) * (s_of[dim * i + l] - target[dim * i + l]);
             }
           parts.own[0] = strength_i.friction * d[k] / r;
           return parts;
         }
       // (h C f)_ik = s_ik - w_target,k
       parts.flex[k] = 1.;
-      parts.rhs     = s[r_ik] - target[r_ik];
+      parts.rhs     = s_of[r_ik] - target[r_ik];
       return parts;
     };
-    const auto system_row = [&](const unsigned int i, const RowParts &parts, double *row) {
-      std::fill(row, row + m, 0.);
-      for (unsigned int l = 0; l < dim; ++l)
-        if (parts.flex[l] != 0.)
-          for (unsigned int j = 0; j < m; ++j)
-            row[j] += parts.flex[l] * flexibility(j, dim * i + l);
-      for (unsigned int l = 0; l < dim; ++l)
-        row[dim * i + l] += parts.own[l];
-    };
-    // What a pair's rows depend on besides C, h and r.
     const auto rows_of = [&](const unsigned int i) {
       RowsOfPair rows{state[i], {}, 0., 0.};
       if (state[i] == PairState::slip)
@@ -260,171 +146,77 @@ namespace archdam::joints
         }
       return rows;
     };
-
-    // The rows that changed, ascending: the normal row is the flexibility
-    // row in stick and slip alike, and changes only with a separation.
-    std::vector<unsigned int> changed;
-    if (base_rows.size() == pairs.size())
-      for (unsigned int i = 0; i < pairs.size(); ++i)
-        if (!(rows_of(i) == base_rows[i]))
-          for (unsigned int k = 0; k < dim; ++k)
-            if (k > 0 || (state[i] == PairState::separation) !=
-                           (base_rows[i].state == PairState::separation))
-              changed.push_back(dim * i + k);
-    if (base_rows.size() != pairs.size() || changed.size() > max_update_rows(m))
+    dealii::Vector<double> x;
+    switch (system.solve(C_rows, m, hc, row_of, rows_of, x))
       {
-        base.reinit(m, m);
-        std::vector<double> row(m);
-        base_rows.resize(pairs.size());
-        for (unsigned int i = 0; i < pairs.size(); ++i)
-          {
-            for (unsigned int k = 0; k < dim; ++k)
-              {
-                system_row(i, row_parts(i, k), row.data());
-                for (unsigned int j = 0; j < m; ++j)
-                  base(dim * i + k, j) = row[j];
-              }
-            base_rows[i] = rows_of(i);
-          }
-        base.compute_lu_factorization();
-        ++factorizations;
-        update_columns.assign(m, {});
-        changed.clear();
+        case PairSystem::Solve::factorized:
+          ++factorizations;
+          break;
+        case PairSystem::Solve::updated:
+          ++updated_solves;
+          break;
+        case PairSystem::Solve::kept:
+          break;
       }
-
-    const unsigned int     n_changed = changed.size();
-    dealii::Vector<double> b(m);
-    std::vector<RowParts>  changed_parts(n_changed);
-    for (unsigned int i = 0, a = 0; i < pairs.size(); ++i)
+    for (unsigned int a = 0; a < own.size(); ++a)
+      for (unsigned int k = 0; k < dim; ++k) // an open pair's exactly 0, not round-off
+        force[dim * own[a] + k] =
+          state[own[a]] == PairState::separation ? 0. : x(dim * a + k);
+    if (&system == &all_pairs)
+      {
+        set_relative_displacement();
+        return;
+      }
+    // the system's own w = s_of - h C f on its pairs
+    for (const unsigned int i : own)
       for (unsigned int k = 0; k < dim; ++k)
         {
-          const unsigned int r_ik  = dim * i + k;
-          const RowParts     parts = row_parts(i, k);
-          b(r_ik)                  = parts.rhs;
-          if (a < n_changed && changed[a] == r_ik)
-            changed_parts[a++] = parts;
+          const double *row = &C_rows[static_cast<std::size_t>(dim * i + k) * m];
+          double        v   = s_of[dim * i + k];
+          for (const unsigned int j : own)
+            for (unsigned int l = 0; l < dim; ++l)
+              v -= hc * row[dim * j + l] * force[dim * j + l];
+          w[dim * i + k] = v;
         }
-    dealii::Vector<double> x(b);
-    base.solve(x); // y
-    if (n_changed > 0)
-      {
-        ++updated_solves;
-        // Z's missing columns, in one multi-column solve.
-        std::vector<unsigned int> missing;
-        for (const unsigned int j : changed)
-          if (update_columns[j].size() == 0)
-            missing.push_back(j);
-        if (!missing.empty())
-          {
-            dealii::LAPACKFullMatrix<double> Z(m, missing.size());
-            for (unsigned int c = 0; c < missing.size(); ++c)
-              Z(missing[c], c) = 1.;
-            base.solve(Z);
-            for (unsigned int c = 0; c < missing.size(); ++c)
-              {
-                update_columns[missing[c]].reinit(m);
-                for (unsigned int j = 0; j < m; ++j)
-                  update_columns[missing[c]](j) = Z(j, c);
-              }
-          }
-        // T = A_R Z and t = A_R y - b_R. Where a new row's rows of h C are
-        // rows of the base (a pair that the base has in stick, or a normal
-        // row), A0_r Z = (E_R)_r and A0_r y = b_r give those parts without a
-        // product: such a row (a slipping pair that the base has stuck, a
-        // separated pair, a pair slipping with kappa = 0) costs its own few
-        // entries of Z and y; the other rows are built and multiplied by Z.
-        const auto base_row_is_flexibility = [&](const unsigned int i, const unsigned int l) {
-          return base_rows[i].state == PairState::stick ||
-                 (base_rows[i].state == PairState::slip && l == 0);
-        };
-        std::vector<int> position(m, -1);
-        for (unsigned int a = 0; a < n_changed; ++a)
-          position[changed[a]] = a;
-        const auto Z_entry = [&](const unsigned int j, const unsigned int c) {
-          return update_columns[changed[c]](j);
-        };
-        dealii::LAPACKFullMatrix<double> T(n_changed, n_changed);
-        dealii::Vector<double>           t(n_changed);
-        std::vector<unsigned int>        products; // rows of R multiplied by Z
-        for (unsigned int a = 0; a < n_changed; ++a)
-          {
-            const unsigned int i     = changed[a] / dim;
-            const RowParts    &parts = changed_parts[a];
-            bool               cheap = true;
-            for (unsigned int l = 0; l < dim; ++l)
-              cheap = cheap && (parts.flex[l] == 0. || base_row_is_flexibility(i, l));
-            if (!cheap)
-              {
-                products.push_back(a);
-                continue;
-              }
-            t(a) = -b(changed[a]);
-            for (unsigned int l = 0; l < dim; ++l)
-              {
-                const unsigned int r_il = dim * i + l;
-                if (parts.flex[l] != 0.)
-                  {
-                    t(a) += parts.flex[l] * b(r_il);
-                    if (position[r_il] >= 0)
-                      T(a, position[r_il]) += parts.flex[l];
-                  }
-                if (parts.own[l] != 0.)
-                  {
-                    t(a) += parts.own[l] * x(r_il);
-                    for (unsigned int c = 0; c < n_changed; ++c)
-                      T(a, c) += parts.own[l] * Z_entry(r_il, c);
-                  }
-              }
-          }
-        if (!products.empty())
-          {
-            const unsigned int               n_products = products.size();
-            dealii::LAPACKFullMatrix<double> A_P(n_products, m), Z(m, n_changed),
-              T_P(n_products, n_changed);
-            std::vector<double> row(m);
-            for (unsigned int p = 0; p < n_products; ++p)
-              {
-                const unsigned int a = products[p];
-                system_row(changed[a] / dim, changed_parts[a], row.data());
-                double y_a = 0.;
-                for (unsigned int j = 0; j < m; ++j)
-                  {
-                    A_P(p, j) = row[j];
-                    y_a += row[j] * x(j);
-                  }
-                t(a) = y_a - b(changed[a]);
-              }
-            for (unsigned int c = 0; c < n_changed; ++c)
-              for (unsigned int j = 0; j < m; ++j)
-                Z(j, c) = Z_entry(j, c);
-            A_P.mmult(T_P, Z);
-            for (unsigned int p = 0; p < n_products; ++p)
-              for (unsigned int c = 0; c < n_changed; ++c)
-                T(products[p], c) = T_P(p, c);
-          }
-        T.compute_lu_factorization();
-        T.solve(t);
-        for (unsigned int a = 0; a < n_changed; ++a)
-          x.add(-t(a), update_columns[changed[a]]);
-      }
-    for (unsigned int j = 0; j < m; ++j)
-      force[j] = x(j);
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      if (state[i] == PairState::separation) // exactly 0, not round-off
-        std::fill(&force[dim * i], &force[dim * i] + dim, 0.);
-    set_relative_displacement();
   }
 
   void
   MixedJointSolver::forget_factorization()
   {
-    base_rows.clear();
-    update_columns.clear();
+    all_pairs.forget();
+    for (PairSystem &system : by_joint)
+      system.forget();
   }
 
   bool
-  MixedJointSolver::active_set_iteration(ContactStep &step, const unsigned int limit)
+  MixedJointSolver::settle(const std::vector<unsigned int> &among)
   {
+    bool changed = false;
+    for (const unsigned int i : among)
+      changed = update_state(i) || changed;
+    // The Newton step meets the slip law f_t = tau q / |q| only at
+    // convergence: a slipping pair whose force is off it by more than Force
+    // tolerance, relative to the largest pair force (the scale of the force
+    // change, and of the round-off of the dense solve: relative to a weakly
+    // loaded pair's own force the test asked for more digits than the solve
+    // has), is not converged.
+    const double force_scale = largest_pair_force();
+    for (auto i = among.begin(); i != among.end() && !changed; ++i)
+      if (state[*i] == PairState::slip)
+        {
+          const double *f   = &force[dim * *i];
+          const double  tau = strength(*i).shear_capacity(f[0]);
+          changed = std::hypot(f[1] - tau * direction[*i][1], f[2] - tau * direction[*i][2]) >
+                    p.force_tolerance * force_scale;
+        }
+    return !changed;
+  }
+
+  bool
+  MixedJointSolver::active_set_iteration(ContactStep &step, const unsigned int limit,
+                                         PairSystem &system, const std::vector<double> &s_of)
+  {
+    const auto         &among = system.pairs();
     std::vector<double> before;
     // How often the iteration has come to each set of states (with the
     // damage) from another: one come to for the cycle_visits-th time means
@@ -433,9 +225,9 @@ namespace archdam::joints
     // Iterations that keep the states and only turn slip directions are not
     // visits.
     const auto states_now = [&] {
-      std::vector<unsigned char> s(pairs.size());
-      for (unsigned int i = 0; i < pairs.size(); ++i)
-        s[i] = 2 * static_cast<unsigned char>(state[i]) + (damaged[i] ? 1 : 0);
+      std::vector<unsigned char> s(among.size());
+      for (unsigned int a = 0; a < among.size(); ++a)
+        s[a] = 2 * static_cast<unsigned char>(state[among[a]]) + (damaged[among[a]] ? 1 : 0);
       return s;
     };
     std::map<std::vector<unsigned char>, unsigned int> visits;
@@ -444,28 +236,18 @@ namespace archdam::joints
       {
         ++step.iterations;
         before = force;
-        solve_with_fixed_states();
-        bool changed = false;
-        for (unsigned int i = 0; i < pairs.size(); ++i)
-          changed = update_state(i) || changed;
-        // The Newton step meets the slip law f_t = tau q / |q| only at
-        // convergence: a slipping pair whose force is off it by more than
-        // Force tolerance, relative to the largest pair force (the scale of
-        // the force change below, and of the round-off of the dense solve:
-        // relative to a weakly loaded pair's own force the test asked for
-        // more digits than the solve has), is not converged.
-        const double force_scale = largest_pair_force();
-        for (unsigned int i = 0; i < pairs.size() && !changed; ++i)
-          if (state[i] == PairState::slip)
+        solve_with_fixed_states(system, s_of);
+        const bool settled = settle(among);
+        step.force_change  = relative_change(before);
+        step.gap_residual  = 0.;
+        step.worst_pair    = among.front();
+        for (const unsigned int i : among)
+          if (const double r = law_residual(i); r > step.gap_residual)
             {
-              const double *f   = &force[dim * i];
-              const double  tau = strength(i).shear_capacity(f[0]);
-              changed = std::hypot(f[1] - tau * direction[i][1], f[2] - tau * direction[i][2]) >
-                        p.force_tolerance * force_scale;
+              step.gap_residual = r;
+              step.worst_pair   = i;
             }
-        step.force_change = relative_change(before);
-        step.gap_residual = gap_residual(step.worst_pair);
-        if (!changed && step.gap_residual <= p.gap_tolerance)
+        if (settled && step.gap_residual <= p.gap_tolerance)
           return step.converged = true;
         const auto states = states_now();
         if (states != previous && ++visits[states] == cycle_visits)
@@ -580,7 +362,7 @@ namespace archdam::joints
         pgs_w        = w;
         pgs_damage   = damaged;
         pgs_opening  = largest_opening;
-        if (active_set_iteration(step, active_set_polish))
+        if (active_set_iteration(step, active_set_polish, all_pairs, s))
           return;
         force           = pgs_force;
         w               = pgs_w;
@@ -722,18 +504,33 @@ namespace archdam::joints
       }
     start_solve();
 
-    // The active-set iteration first (exact and fast when the states settle);
-    // if it does not, projected Gauss-Seidel from the committed forces, which
-    // converges, with the active set tried again on the states it reaches.
+    // Joint by joint, when chosen; if it does not settle, or all pairs at
+    // once: the active-set iteration first (exact and fast when the states
+    // settle); if it does not, projected Gauss-Seidel from the committed
+    // forces, which converges, with the active set tried again on the states
+    // it reaches.
     ContactStep                  step;
     const std::vector<bool>      damage_at_start  = damaged;
     const std::vector<double>    opening_at_start = largest_opening;
     const std::vector<PairState> states_at_start  = state;
-    if (!active_set_iteration(step, std::min(p.max_iterations, active_set_limit)))
+    const auto                   start_again      = [&] {
+      damaged         = damage_at_start;
+      largest_opening = opening_at_start;
+      state           = states_at_start;
+    };
+    const bool solved = !by_joint.empty() && joint_by_joint(step);
+    if (!by_joint.empty() && !solved)
       {
-        damaged         = damage_at_start;
-        largest_opening = opening_at_start;
-        state           = states_at_start;
+        ++handed_over;
+        start_again();
+        force = force_committed;
+        set_relative_displacement();
+        start_solve();
+      }
+    if (!solved && !active_set_iteration(step, std::min(p.max_iterations, active_set_limit),
+                                         all_pairs, s))
+      {
+        start_again();
         projected_gauss_seidel(step);
       }
     set_load();

@@ -58,6 +58,24 @@ namespace archdam::joints
     return names;
   }
 
+  /// `Contraction joints/Contact problem`: how the mixed method solves the
+  /// contact problem on the pairs (doc/theory/joints.md §6 and §12).
+  enum class ContactProblem
+  {
+    joint_by_joint,   ///< block Gauss-Seidel over the joints, each joint exact
+    all_pairs_at_once ///< one active set on every pair
+  };
+
+  /// The names of ContactProblem in the case file.
+  inline const SelectionNames<ContactProblem> &
+  contact_problem_names()
+  {
+    static const SelectionNames<ContactProblem> names{
+      {"joint by joint", ContactProblem::joint_by_joint},
+      {"all pairs at once", ContactProblem::all_pairs_at_once}};
+    return names;
+  }
+
   /// `Contraction joints/Mixed method solves`: how a solve of the mixed
   /// method reaches the pairs (doc/theory/joints.md §4).
   enum class MixedSolves
@@ -211,6 +229,7 @@ namespace archdam::joints
     Model       model        = Model::glued;
     Solver      solver       = Solver::mixed;
     Coupling    coupling     = Coupling::all_joints;
+    ContactProblem contact_problem = ContactProblem::all_pairs_at_once;
     MixedSolves mixed_solves = MixedSolves::condensed_on_the_pairs;
     Law           strength_law = Law::mohr_coulomb;
     ContactInTime contact_in_time = ContactInTime::step_impulse;

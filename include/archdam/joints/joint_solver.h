@@ -3,6 +3,7 @@
 #include <archdam/joints/contact_law.h>
 #include <archdam/joints/joint_parameters.h>
 #include <archdam/joints/node_pairs.h>
+#include <archdam/joints/pair_system.h>
 #include <archdam/time/factorized_operator.h>
 #include <archdam/time/newmark.h>
 
@@ -224,6 +225,9 @@ namespace archdam::joints
     {
       return law->strength(laws[i], pairs[i].area, {damaged[i], largest_opening[i]});
     }
+    /// The violation of the law in w at pair i [m].
+    double
+    law_residual(unsigned int i) const;
     /// Largest violation of the law in w over all pairs, and where.
     double
     gap_residual(unsigned int &worst) const;
@@ -298,9 +302,13 @@ namespace archdam::joints
    * f_t = (c A - mu f_xi) q / |q|, see solve_with_fixed_states(); separation:
    * f = 0), a dense system on the forces of the closed pairs
    * solved by LU; then update_state() on every pair; repeat until no state
-   * or direction changes. All pairs are coupled through C at once, so a
-   * rigid block on several pairs stops or slides as a whole (a pair-by-pair
-   * Gauss-Seidel sweep cycles there between stick and slip).
+   * or direction changes. A joint's pairs are coupled through C at once, so
+   * a rigid block on several pairs stops or slides as a whole (a pair-by-pair
+   * Gauss-Seidel sweep cycles there between stick and slip). With Contact
+   * problem = joint by joint the joints are solved one after the other
+   * (block Gauss-Seidel, doc/theory/joints.md §12), each by that iteration on
+   * its own system, until the law holds with the exact C at every pair;
+   * otherwise, and for a step that does not settle so, all pairs at once.
    */
   class MixedJointSolver : public JointSolver
   {
@@ -322,9 +330,16 @@ namespace archdam::joints
     }
     /// Wall time of building C [s].
     double build_time = 0.;
+    /// What the contact problem holds: C (by columns and by rows), G and
+    /// the pair systems' LUs [bytes].
+    std::size_t
+    memory() const;
     /// Fixed-state systems solved with a new LU of the whole system, and
-    /// with the kept LU updated by the rows that changed.
+    /// with the kept LU updated by the rows that changed (all systems: the
+    /// joints' own too).
     unsigned long factorizations = 0, updated_solves = 0;
+    /// Steps that joint by joint handed to all pairs at once.
+    unsigned long handed_over = 0;
 
   private:
     /// Active-set iterations before projected Gauss-Seidel takes over, and
@@ -337,6 +352,8 @@ namespace archdam::joints
     /// (doc/theory/joints.md §6).
     static constexpr unsigned int active_set_limit = 100, active_set_polish = 10,
                                   polish_after = 5, cycle_visits = 3;
+    /// Sweeps over the joints before a step is handed to all pairs at once.
+    static constexpr unsigned int sweep_limit = 100;
 
     /// @p out += @p factor C @p f.
     void
@@ -345,13 +362,26 @@ namespace archdam::joints
     /// w = s - omega h C f.
     void
     set_relative_displacement();
-    /// The forces from the law with the states and slip directions fixed
-    /// (the base's LU, updated by the rows that changed), then w.
+    /// The forces of @p system's pairs from the law with the states and
+    /// slip directions fixed, where their relative displacement at zero
+    /// forces of their own is @p s_of; then their w.
     void
-    solve_with_fixed_states();
-    /// Up to @p limit active-set iterations; true if they converged.
+    solve_with_fixed_states(PairSystem &system, const std::vector<double> &s_of);
+    /// update_state() on the pairs @p among; true if it changed none and
+    /// every slipping one's force is on the slip law to Force tolerance
+    /// (relative to the largest pair force).
     bool
-    active_set_iteration(ContactStep &step, unsigned int limit);
+    settle(const std::vector<unsigned int> &among);
+    /// Up to @p limit active-set iterations on @p system; true if they
+    /// converged.
+    bool
+    active_set_iteration(ContactStep &step, unsigned int limit, PairSystem &system,
+                         const std::vector<double> &s_of);
+    /// Block Gauss-Seidel over the joints, each joint's problem solved
+    /// exactly by the active set (doc/theory/joints.md §12); true if it
+    /// converged to the exact problem's tolerances.
+    bool
+    joint_by_joint(ContactStep &step);
     /// Projected Gauss-Seidel sweeps from the committed forces until the law
     /// holds to the tolerances or the iterations run out.
     void
@@ -383,33 +413,16 @@ namespace archdam::joints
     dealii::Vector<double>                                    interface_x;
     /// Relative displacement of the pairs at zero pair forces.
     std::vector<double> s;
-    /// What a pair's rows of the fixed-state system depend on besides C, h
-    /// and its augmentation.
-    struct RowsOfPair
-    {
-      PairState              state;
-      dealii::Tensor<1, dim> direction;
-      double                 kappa, friction;
-      bool
-      operator==(const RowsOfPair &o) const
-      {
-        return state == o.state && direction == o.direction && kappa == o.kappa &&
-               friction == o.friction;
-      }
-    };
-    /// The fixed-state system's rows that may differ from the base before it
-    /// is factorized anew.
-    static unsigned int
-    max_update_rows(const unsigned int m)
-    {
-      return std::max(8u, m / 4);
-    }
-    /// The LU of the fixed-state system at its last factorization (the
-    /// base), what its rows were made of (none before the first), and
-    /// base^{-1} e_j for the rows j changed since (empty where not needed).
-    dealii::LAPACKFullMatrix<double>    base;
-    std::vector<RowsOfPair>             base_rows;
-    std::vector<dealii::Vector<double>> update_columns;
+    /// The fixed-state system of all pairs at once, and of every joint
+    /// alone (Contraction joints/Contact problem = joint by joint).
+    PairSystem              all_pairs;
+    std::vector<PairSystem> by_joint;
+    /// Of every joint, the indices of the joints whose pairs a change of its
+    /// forces moves within a sweep: itself and its neighbours
+    /// (doc/theory/joints.md §12).
+    std::vector<std::vector<unsigned int>> reach;
+    /// s with the forces of the other joints: what a joint's own system sees.
+    std::vector<double> s_joint;
     Vector              rhs, correction;
   };
 
