@@ -26,7 +26,9 @@ namespace archdam::testing
   };
 
   /// The case text of the coarse arch dam on the @p foundation model, its
-  /// results in @p directory, @p end_time [s] of the motion.
+  /// results in @p directory, the first @p end_time [s] of the motion, run
+  /// until the motion has reached the free surface whole (on massed rock
+  /// that is later, by the wave's way up from the model's bottom).
   inline std::string
   arch_dam_case(const std::string &foundation, const std::string &directory,
                 const Reservoir reservoir = Reservoir::water_and_frictional_joints,
@@ -61,7 +63,9 @@ subsection Damping
   set First frequency = 2
   set Second frequency = 15
 end
-)" + case_text::time_integration(0.01, end_time) + case_text::el_centro_x() +
+)" + case_text::time_integration(0.01, 0.) +
+           case_text::el_centro_x("    subsection Processing\n      set End time = " +
+                                  std::to_string(end_time) + "\n    end\n") +
            case_text::displacement_monitors("crest: 5, 0, 234; base: 24, 0, 1") +
            case_text::quiet_output(directory, 0);
   }

@@ -3,6 +3,7 @@
 //   a time step too long for the rock's depth is reported;
 // - the MTF's stabilization rate times the step (gamma per step) above 0.5;
 // - the viscous boundary without springs cannot carry the static stage;
+// - the free field's band limit must be positive (doc/theory/foundation.md §4);
 // - and what must be accepted: a dam flush with the rock's side boundary,
 //   whose MTF points run along the rock's top face under the dam.
 
@@ -96,6 +97,8 @@ main(int argc, char **argv)
                "  set Transmitting boundary = MTF\n  set Stabilization rate = 60");
   expect_error("viscous boundary without springs, static stage",
                "  set Transmitting boundary = viscous");
+  expect_error("free field through the damped rock with a band limit of 0 Hz",
+               "  set Transmitting boundary = MTF\n  set Band limit = 0");
   // 2 c_p dt = 3.2 m, within the 10 m of rock below the dam; the dam's end
   // faces are flush with the rock's sides.
   expect_run("MTF under a dam flush with the rock's side boundary (Rock extent = 0) runs",

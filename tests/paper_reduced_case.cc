@@ -7,7 +7,8 @@
 // short window of the motion: 1 s of its strong part (2.8 s to 3.8 s, where
 // the crown joint of the full run first opens), with 0.2 s tapers and scaled
 // by 2.5 so that the joints open within the window although the dam starts
-// from rest.
+// from rest; the run lasts 1.3 s, the window and the wave's way up from the
+// model's bottom (0.53 s through the damped rock).
 //
 // This is a regression guard, not a verification: the stored values below
 // were recorded from this case when it was set up (they are the program's
@@ -16,7 +17,12 @@
 // position correction, again when the rock lost its mass-proportional
 // damping, the static values again when the case's static stage became
 // a dynamic relaxation, and the dynamic peaks again when the joints' closure
-// became dissipative: s1 at C -2.7 %, joint 6 -0.5 %, joint 3 -0.8 %); the physics behind each is verified by the tests named in
+// became dissipative: s1 at C -2.7 %, joint 6 -0.5 %, joint 3 -0.8 %; and
+// the dynamic peaks again, with the window run to 1.3 s instead of 1 s
+// so that the wave's longer way up is inside it, when the free field was
+// deconvolved through the damped rock and the dam's mass term made to act
+// relative to the ground: joint 6 +17 % and +11 % from each, +24 % from
+// both, against the same 1.3 s window); the physics behind each is verified by the tests named in
 // doc/verification.md. What it catches is an unnoticed change of the case's
 // results: a parameter of the case file, a default, or a module whose own
 // tests still pass. Tolerances: the mesh and pair counts exactly; the static
@@ -77,7 +83,7 @@ main(int argc, char **argv)
     "Ground motion/Component y/Processing/End time=3.8",
     "Ground motion/Component y/Processing/Taper length=0.2",
     "Ground motion/Component y/Scale factor=2.5",
-    "Time integration/End time=1",
+    "Time integration/End time=1.3",
     "Output/Directory=paper_reduced",
     "Output/Field output interval=100",
     "Output/Progress=false",
@@ -103,12 +109,12 @@ main(int argc, char **argv)
 
   check_stored("static crest u_x [m]", number("static|crest.ux [m]"), 0.005654477068, 1e-6);
   check_stored("static crest u_z [m]", number("static|crest.uz [m]"), -0.01466903057, 1e-6);
-  check_stored("peak crest u_x [m]", number("peaks|crest.ux [m]|value"), -0.05662143812, 1e-3);
-  check_stored("peak C major principal stress [Pa]", number("peaks|C.s1 [Pa]|value"), 569549.0187, 1e-3);
+  check_stored("peak crest u_x [m]", number("peaks|crest.ux [m]|value"), -0.1736997481, 1e-3);
+  check_stored("peak C major principal stress [Pa]", number("peaks|C.s1 [Pa]|value"), 729421.5052, 1e-3);
   check_stored("peak opening of the crown joint 6 [m]",
-               number("dynamic|joints|joint 6|peak opening [m]"), 0.004111957945, 1e-3);
+               number("dynamic|joints|joint 6|peak opening [m]"), 0.006830711678, 1e-3);
   check_stored("peak opening of joint 3 [m]", number("dynamic|joints|joint 3|peak opening [m]"),
-               0.002821180349, 1e-3);
+               0.004674501739, 1e-3);
 
   const auto &names = sim.recorder<archdam::output::JointOutput>()->columns();
   const auto  a     = std::find(names.begin(), names.end(), "A.opening [m]") - names.begin();

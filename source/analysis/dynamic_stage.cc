@@ -53,6 +53,12 @@ namespace archdam::analysis
     operators.newmark   = p.time_integration;
     operators.fluid     = model().fluid();
     operators.density   = p.reservoir.density;
+    operators.dam_damping = model().dam_damping();
+    if (model().reference_motion())
+      {
+        operators.reference       = model().reference_motion();
+        operators.reference_loads = &model().reference_loads();
+      }
     if (foundation())
       {
         operators.viscous    = foundation()->viscous_boundary();
@@ -136,8 +142,10 @@ namespace archdam::analysis
   unsigned int
   Simulation::dynamic_steps() const
   {
-    const double end = p.time_integration.end_time > 0 ? p.time_integration.end_time :
-                                                         model().ground_motion().duration();
+    // By default the whole record, as it reaches the free surface.
+    const double end = p.time_integration.end_time > 0 ?
+                         p.time_integration.end_time :
+                         model().ground_motion().duration() + model().ground_motion_delay();
     if (end <= 0)
       throw InputError("Time integration/End time is 0 and there is no ground motion to "
                        "take the duration from.");
@@ -228,11 +236,16 @@ namespace archdam::analysis
             }
         }
     text.str("");
-    if (end > model().ground_motion().duration() + 0.5 * p.time_integration.time_step)
+    const double motion_end = model().ground_motion().duration() + model().ground_motion_delay();
+    if (end > motion_end + 0.5 * p.time_integration.time_step)
       {
         text << "the dynamic stage runs to t = " << end << " s, past the end of the ground "
-             << "motion at " << model().ground_motion().duration() << " s: from there on the ground is "
-             << "at rest and the dam vibrates freely (Time integration/End time).";
+             << "motion at " << motion_end << " s";
+        if (model().ground_motion_delay() > 0.)
+          text << " (its record's end, plus " << model().ground_motion_delay()
+               << " s for the wave to reach the free surface)";
+        text << ": from there on the ground is at rest and the dam vibrates freely (Time "
+                "integration/End time).";
         warn(text.str());
       }
     // A generated motion ends at rest whatever its envelope; cut while the

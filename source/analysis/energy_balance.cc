@@ -17,7 +17,7 @@ namespace archdam::analysis
     const double magnitudes = std::abs(kinetic) + std::abs(strain) + std::abs(damping) +
                               std::abs(radiated) + std::abs(contact) + std::abs(water) +
                               std::abs(water_radiated) + std::abs(algorithmic) +
-                              std::abs(correction);
+                              std::abs(correction) + std::abs(damping_reference);
     const double scale = std::max(std::abs(input), magnitudes);
     return scale > 0. ? std::abs(input + correction - sum()) / scale : 0.;
   }
@@ -149,7 +149,7 @@ namespace archdam::analysis
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
                       &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch,
                       &a_prev, &inertia_prev, &mean, &jump, &solid_part,
-                      &correction_residual})
+                      &correction_residual, &dam_prev})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -169,6 +169,8 @@ namespace archdam::analysis
             prescribed_mask(i) = 1.;
         prescribed_mask.compress(VectorOperation::insert);
       }
+    for (unsigned int d = 0; d < dim && m.reference; ++d)
+      reference_mass[d] = (*m.reference_loads)[d].mean_value() * (*m.reference_loads)[d].size();
     // Setting constrained entries to zero one by one costs a PETSc call per
     // entry; a pointwise product with a mask is one pass.
     free_mask = 1.;
@@ -274,6 +276,15 @@ namespace archdam::analysis
     u_prev = u_static;
     free_part(s.v, v_prev);
     damping_force(v_prev, damping_prev);
+    if (m.dam_damping)
+      m.dam_damping->vmult(dam_prev, v_prev);
+    for (unsigned int d = 0; d < dim && m.reference; ++d)
+      reference_work_prev[d] = (*m.reference_loads)[d] * v_prev;
+    if (m.reference)
+      {
+        vr_prev = m.reference->velocity(s.time);
+        dr_prev = m.reference->displacement(s.time);
+      }
     if (dissipative())
       {
         free_part(s.a, a_prev);
@@ -365,8 +376,9 @@ namespace archdam::analysis
 
     // Rayleigh damping: du . (D v_n + D v_{n+1}) / 2.
     damping_force(v_prev, tmp);
-    sums.damping += 0.5 * (du * damping_prev + du * tmp);
-    damping_prev = tmp;
+    const double damping_work = 0.5 * (du * damping_prev + du * tmp);
+    damping_prev              = tmp;
+    add_dam_damping(s, damping_work);
 
     // Relative formulation: F = -sum_d a_g,d M iota_d (doc/theory/foundation.md §2), and
     // the ground's own motion, integrated by the same Newmark rule, for the
@@ -462,6 +474,52 @@ namespace archdam::analysis
   }
 
   void
+  EnergyBalance::add_dam_damping(const time::NewmarkState &s, const double total)
+  {
+    // With the dam's mass term on v - w, w = iota v_r (doc/theory/solid.md
+    // §4), the damping forces are -D v + D_dam w, D_dam w = sum_d v_r,d g_d
+    // (g_d = D_dam iota_d = alpha_d M_dam iota_d, the loads of the
+    // integrator). Their work over the step, with r = v - w, du_r the
+    // reference's own increment iota dd_r and <x> the step's mean, is
+    //   du . D <v> - du . D_dam <w>
+    //     = du . (D - D_dam) <v>             (the rock)
+    //     + (du - du_r) . D_dam <r>          (the dam: zero when it moves
+    //                                         rigidly with w, ~ dt <r> D_dam <r>)
+    //     + du_r . D_dam <r>,                (handed to the reference motion)
+    // with du_r . D_dam <r> = sum_d dd_r,d (<g_d . v> - m_d <v_r,d>), m_d =
+    // iota_d . g_d = alpha_d times the dam's mass.
+    if (!m.dam_damping)
+      {
+        sums.damping += total;
+        return;
+      }
+    m.dam_damping->vmult(tmp2, v_prev);
+    const double dam_total = 0.5 * (du * dam_prev + du * tmp2);
+    dam_prev               = tmp2;
+    double relative_load = 0., handed = 0.;
+    if (m.reference)
+      {
+        const Tensor<1, dim> vr = m.reference->velocity(s.time);
+        const Tensor<1, dim> dr = m.reference->displacement(s.time);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const Vector &g    = (*m.reference_loads)[d];
+            const double  gv   = g * v_prev;
+            const double  md   = reference_mass[d];
+            const double  vr_m = 0.5 * (vr[d] + vr_prev[d]);
+            relative_load += vr_m * (du * g);
+            handed += (dr[d] - dr_prev[d]) * (0.5 * (gv + reference_work_prev[d]) - md * vr_m);
+            reference_work_prev[d] = gv;
+          }
+        vr_prev = vr;
+        dr_prev = dr;
+      }
+    sums.damping += total - relative_load - handed;
+    sums.damping_dam += dam_total - relative_load - handed;
+    sums.damping_reference += handed;
+  }
+
+  void
   EnergyBalance::add_algorithmic_dissipation(const time::NewmarkState &s, const Vector &v_old,
                                              const double dt)
   {
@@ -529,6 +587,13 @@ namespace archdam::analysis
     summary.set(s + "kinetic energy [J]", e.kinetic);
     summary.set(s + "strain energy [J]", e.strain);
     summary.set(s + "damping dissipation [J]", e.damping);
+    if (m.dam_damping)
+      {
+        summary.set(s + "damping dissipation in the dam [J]", e.damping_dam);
+        summary.set(s + "damping dissipation in the rock [J]", e.damping - e.damping_dam);
+      }
+    if (m.reference)
+      summary.set(s + "damping work handed to the reference motion [J]", e.damping_reference);
     summary.set(s + "radiated energy [J]", e.radiated);
     summary.set(s + "contact dissipation [J]", e.contact);
     if (!f_static.empty())
@@ -568,6 +633,10 @@ namespace archdam::analysis
     std::ostringstream out;
     out << std::setprecision(4) << "Energy balance: input " << e.input << " J = kinetic "
         << e.kinetic << " + strain " << e.strain << " + damping " << e.damping;
+    if (m.dam_damping)
+      out << " (dam " << e.damping_dam << ", rock " << e.damping - e.damping_dam << ")";
+    if (m.reference)
+      out << " + to the reference motion " << e.damping_reference;
     if (m.viscous)
       out << " + radiated " << e.radiated;
     if (!f_static.empty())
@@ -594,9 +663,10 @@ namespace archdam::analysis
     for (const Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                             &boundary_prev, &boundary_static, &free_field_prev,
                             &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev,
-                            &inertia_prev, &correction_residual})
+                            &inertia_prev, &correction_residual, &dam_prev})
       binary::write(out, *v);
-    binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
+    binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums,
+                      reference_work_prev, vr_prev, dr_prev);
   }
 
   void
@@ -605,8 +675,9 @@ namespace archdam::analysis
     for (Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                       &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
                       &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev,
-                      &correction_residual})
+                      &correction_residual, &dam_prev})
       binary::read(in, *v);
-    binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums);
+    binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums,
+                     reference_work_prev, vr_prev, dr_prev);
   }
 } // namespace archdam::analysis

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <tuple>
 #include <limits>
 
 namespace archdam::analysis
@@ -45,10 +46,12 @@ namespace archdam::analysis
             summary.set(key + "PGV [m/s]", pgv);
             summary.set(key + "PGD [m]", pgd);
             summary.set(key + "duration [s]", duration);
+            summary.set(key + "processing", motion.processing(d));
             screen << "Ground motion in " << "xyz"[d] << ": PGA " << std::setprecision(4)
                    << pga / loads::standard_gravity << " g (" << pga << " m/s^2) at t = "
                    << record.time_of_peak() << " s, PGV " << 100. * pgv << " cm/s, PGD "
-                   << 100. * pgd << " cm, " << duration << " s" << std::endl;
+                   << 100. * pgd << " cm, " << duration << " s; processing: "
+                   << motion.processing(d) << std::endl;
           }
     }
   } // namespace
@@ -153,25 +156,23 @@ namespace archdam::analysis
 
     const auto inertia = p.foundation.rock_has_mass() ? physics::solid::InertiaOf::dam_and_rock :
                                                         physics::solid::InertiaOf::dam;
-    // D is assembled only when dam and rock are damped differently.
-    const bool per_material = !p.damping.uniform();
+    // D is assembled only when it is not alpha M + beta K of the whole
+    // model: dam and rock damped differently, or a Westergaard added mass,
+    // which the dam's alpha does not damp (doc/theory/solid.md §4).
+    const auto [alpha_dam, beta_dam] = p.damping.rayleigh_coefficients();
+    const bool per_material =
+      !p.damping.uniform() || (water == reservoir::Model::westergaard && alpha_dam != 0.);
     physics::solid::assemble_mass_and_stiffness(*fe_space, p.materials, inertia, mass_matrix,
                                                 stiffness_matrix,
                                                 per_material ? &p.damping : nullptr,
                                                 per_material ? &damping_matrix : nullptr);
+    if (alpha_dam != 0. || beta_dam != 0.)
+      physics::solid::assemble_dam_damping(*fe_space, p.materials, p.damping,
+                                           dam_damping_matrix);
     const double level =
       water == reservoir::Model::none ? 0. : reservoir::water_level(p.reservoir, mesh);
     if (water == reservoir::Model::westergaard)
-      {
-        reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
-        // The added mass moves with the dam: the dam's alpha damps it (alpha M
-        // of the whole model when the damping is uniform).
-        if (per_material)
-          reservoir::add_westergaard_mass(*fe_space,
-                                          p.damping.rayleigh_coefficients().first *
-                                            p.reservoir.density,
-                                          level, damping_matrix);
-      }
+      reservoir::add_westergaard_mass(*fe_space, p.reservoir.density, level, mass_matrix);
     if (p.reservoir.has_pressure())
       {
         fluid_operators = std::make_unique<reservoir::FluidOperators>();
@@ -204,6 +205,16 @@ namespace archdam::analysis
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
   }
 
+  double
+  Model::ground_motion_delay() const
+  {
+    double delay = 0.;
+    for (unsigned int d = 0; d < dim && free_field; ++d)
+      if (motion->has_component(d))
+        delay = std::max(delay, free_field->delay(d));
+    return delay;
+  }
+
   void
   Model::setup_massed_foundation(const Parameters                &p,
                                  const physics::solid::InertiaOf  inertia,
@@ -219,12 +230,16 @@ namespace archdam::analysis
           if (cell->material_id() == ids::rock)
             z_top = std::max(z_top, cell->vertex(v)[dim - 1]);
         }
+    physics::foundation::FreeFieldDamping rock_damping;
+    rock_damping.band_limit = p.foundation.band_limit;
+    if (p.foundation.free_field == physics::foundation::FreeFieldRock::damped)
+      std::tie(rock_damping.alpha, rock_damping.beta) = p.damping.rock_coefficients();
     free_field = std::make_unique<physics::foundation::FreeField>(
-      physics::foundation::FreeField::of_ground_motion(*motion, p.materials.rock, z_top,
-                                                       z_bottom));
+      physics::foundation::FreeField::of_ground_motion(*motion, p.materials.rock, rock_damping,
+                                                       z_top, z_bottom));
     // The integrator with a general damping matrix (the coupled dam-water
     // system's, or the one assembled per material) needs its columns too.
-    const bool general_damping = p.reservoir.has_pressure() || !p.damping.uniform();
+    const bool general_damping = p.reservoir.has_pressure() || damping() != nullptr;
     massed_foundation = physics::foundation::make_massed_foundation(
       p.foundation, *fe_space, p.materials, inertia, *free_field, p.time_integration.time_step,
       general_damping ? &p.damping : nullptr);
@@ -242,8 +257,36 @@ namespace archdam::analysis
            << " m; the ground motion reaches the surface after " << std::setprecision(4)
            << free_field->delay(0) << " s (horizontal), " << free_field->delay(dim - 1)
            << " s (vertical)";
+    if (free_field->damped())
+      screen << "; the free field deconvolved through the rock's damping (alpha = "
+             << rock_damping.alpha << " 1/s, beta = " << rock_damping.beta
+             << " s) up to " << rock_damping.band_limit << " Hz";
     if (const std::string details = massed_foundation->details(); !details.empty())
       screen << "; " << details;
     screen << std::endl;
+
+    // The dam's mass term on the velocity relative to the ground
+    // (doc/theory/solid.md §4): the load v_r,d(t) alpha_d M_dam iota_d.
+    const double alpha_dam = p.damping.rayleigh_coefficients().first;
+    bool has_dam = false;
+    for (const auto &cell : mesh.active_cell_iterators())
+      has_dam = has_dam || ids::is_dam(cell->material_id());
+    if (p.damping.mass_term == physics::solid::MassDamping::relative && alpha_dam != 0. &&
+        has_dam)
+      {
+        reference = std::make_unique<physics::foundation::ReferenceMotion>(*free_field, mesh);
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            physics::solid::assemble_inertia_load(*fe_space, p.materials,
+                                                  physics::solid::InertiaOf::dam,
+                                                  Point<dim>::unit_vector(d),
+                                                  reference_forces[d]);
+            reference_forces[d] *= alpha_dam;
+          }
+        screen << "The dam's mass-proportional damping acts on its velocity relative to the "
+               << "free field's mean over the dam-rock interface (" << std::setprecision(4)
+               << reference->area << " m^2, z = " << reference->z_low << " to "
+               << reference->z_high << " m)" << std::endl;
+      }
   }
 } // namespace archdam::analysis

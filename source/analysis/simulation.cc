@@ -116,7 +116,16 @@ namespace archdam::analysis
     else
       load = 0.;
     if (foundation()) // total motion: the input enters at the boundary
-      return;
+      {
+        // and the dam's mass term acts on v - iota v_r (doc/theory/solid.md §4).
+        if (const auto *reference = model().reference_motion())
+          {
+            const Tensor<1, dim> vr = reference->velocity(t);
+            for (unsigned int d = 0; d < dim; ++d)
+              load.add(vr[d], model().reference_loads()[d]);
+          }
+        return;
+      }
     const Tensor<1, dim> ag = model().ground_motion().acceleration(t);
     for (unsigned int d = 0; d < dim; ++d)
       if (ag[d] != 0.)

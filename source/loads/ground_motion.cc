@@ -193,6 +193,7 @@ namespace archdam::loads
             records[d] = read_component(c, filename, context);
           }
 
+        processing_applied[d] = c.processing.description();
         if (c.processing.any())
           {
             const std::string source = records[d].source;
@@ -266,6 +267,13 @@ namespace archdam::loads
   }
 
 
+
+  const std::string &
+  GroundMotion::processing(const unsigned int d) const
+  {
+    AssertIndexRange(d, 3);
+    return processing_applied[d];
+  }
 
   const GenerationReport *
   GroundMotion::generation_report(const unsigned int d) const

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <complex>
 #include <sstream>
 
@@ -356,6 +357,41 @@ namespace archdam::loads
   }
 
 
+
+  std::string
+  ProcessingParameters::description() const
+  {
+    std::ostringstream out;
+    out << std::setprecision(6);
+    const auto next = [&out]() -> std::ostringstream & {
+      if (out.tellp() > 0)
+        out << ", ";
+      return out;
+    };
+    if (start_time != 0. || end_time != 0. || taper != 0.)
+      {
+        next() << "window from " << start_time << " s to ";
+        if (end_time > 0.)
+          out << end_time << " s";
+        else
+          out << "the end";
+        if (taper > 0.)
+          out << " with " << taper << " s tapers";
+      }
+    if (time_step > 0.)
+      next() << "resampled to " << time_step << " s";
+    if (high_pass > 0.)
+      next() << "high-pass " << high_pass << " Hz";
+    if (low_pass > 0.)
+      next() << "low-pass " << low_pass << " Hz";
+    if (high_pass > 0. || low_pass > 0.)
+      out << " (Butterworth, order " << filter_order << ", zero phase)";
+    if (baseline)
+      next() << "baseline corrected (polynomial of degree " << baseline_degree << ")";
+    if (target_pga > 0.)
+      next() << "scaled to PGA " << target_pga << " g";
+    return out.tellp() > 0 ? out.str() : std::string("none");
+  }
 
   void
   ProcessingParameters::add_parameters(dealii::ParameterHandler &prm)

@@ -15,7 +15,8 @@ namespace archdam::time
                       Patterns::Double(0., Patterns::Double::max_double_value));
     prm.add_parameter("End time", end_time,
                       "End of the dynamic stage [s]; 0 = the duration of the "
-                      "ground motion.",
+                      "ground motion (on massed rock plus the time its wave "
+                      "takes to reach the free surface).",
                       Patterns::Double(0.));
     prm.add_parameter("Beta1", beta1,
                       "Newmark's gamma (paper eq. 2.2): 0.5 = no numerical "

@@ -3,6 +3,7 @@
 #include <archdam/fe/fe_space.h>
 #include <archdam/joints/joint_solver.h>
 #include <archdam/output/recorder.h>
+#include <archdam/physics/foundation/reference_motion.h>
 #include <archdam/physics/foundation/viscous_boundary.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 #include <archdam/time/newmark.h>
@@ -30,8 +31,17 @@ namespace archdam::analysis
     /// 1/2 w^T K w - f_s^T (B w) with w = u - u_static: the elastic energy
     /// from the static state, and the work against the static joint forces.
     double strain = 0.;
-    /// int v^T D v dt (Rayleigh damping).
+    /// What the Rayleigh damping dissipated: int v^T D v dt, with the
+    /// dam's mass term relative to the ground int (v - w)^T D_dam (v - w)
+    /// dt in the dam (w = iota v_r; doc/theory/solid.md §4) instead,
     double damping = 0.;
+    /// of which in the dam (the rest is the rock's: the water's damping is
+    /// its radiation),
+    double damping_dam = 0.;
+    /// and the work the dam's mass term relative to the ground hands to
+    /// the reference motion, int w^T D_dam (v - w) dt: zero when the dam
+    /// moves rigidly with it, of either sign otherwise.
+    double damping_reference = 0.;
     /// int v^T c v dt in the dashpots of the viscous boundary.
     double radiated = 0.;
     /// int f . dw at the joints (f the total pair forces): friction, and
@@ -68,8 +78,8 @@ namespace archdam::analysis
     double
     sum() const
     {
-      return kinetic + strain + damping + radiated + contact + water + water_radiated +
-             algorithmic;
+      return kinetic + strain + damping + damping_reference + radiated + contact + water +
+             water_radiated + algorithmic;
     }
     /// |input + correction - sum| / max(|input|, sum of the magnitudes of
     /// the terms): what no term accounts for.
@@ -127,6 +137,13 @@ namespace archdam::analysis
       time::NewmarkParameters                    newmark;
       /// M iota_d of the relative formulation (massless or rigid foundation).
       const std::array<Vector, dim>             *influence = nullptr;
+      /// The dam's own damping matrix D_dam (Model::dam_damping()): the
+      /// damping in the dam itemized; null: not itemized.
+      const SparseMatrix                        *dam_damping = nullptr;
+      /// The dam's mass term relative to the ground: v_r and the loads
+      /// D_dam iota_d = alpha_d M_dam iota_d it multiplies (Model).
+      const physics::foundation::ReferenceMotion *reference = nullptr;
+      const std::array<Vector, dim>             *reference_loads = nullptr;
       /// The water (compressible and incompressible models) and its density.
       const physics::reservoir::FluidOperators *fluid   = nullptr;
       double                                     density = 1000.;
@@ -205,6 +222,11 @@ namespace archdam::analysis
     /// D v = alpha M v + beta K v (full operators; Model::damping if given).
     void
     damping_force(const Vector &v, Vector &out) const;
+    /// Itemize the step's damping (EnergyTerms::damping_dam,
+    /// damping_reference) for the new state @p s, the total damping's work
+    /// @p total over it and the increment du.
+    void
+    add_dam_damping(const time::NewmarkState &s, double total);
     /// The reaction on the prescribed DOFs at the state @p s.
     void
     boundary_reaction(const time::NewmarkState &s, Vector &out);
@@ -243,6 +265,10 @@ namespace archdam::analysis
     /// work over the next step is the correction's too.
     Vector correction_residual;
     dealii::Tensor<1, dim> ag_prev, vg;
+    /// D_dam v, (D_dam iota_d) . v, v_r and d_r after the last step, and
+    /// iota_d . D_dam iota_d (alpha_d times the dam's mass).
+    Vector                 dam_prev;
+    dealii::Tensor<1, dim> reference_work_prev, vr_prev, dr_prev, reference_mass;
     std::vector<double>    f_static, w_static, f_prev, w_prev;
     double                 t_prev = 0.;
 

@@ -8,6 +8,7 @@
 #include <archdam/output/summary.h>
 #include <archdam/parameters/parameters.h>
 #include <archdam/physics/foundation/massed_foundation.h>
+#include <archdam/physics/foundation/reference_motion.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 #include <archdam/physics/solid/solid_operators.h>
 
@@ -75,6 +76,28 @@ namespace archdam::analysis
     {
       return damping_matrix.m() > 0 ? &damping_matrix : nullptr;
     }
+    /// D_dam, the dam's own damping matrix (doc/theory/solid.md §4), for
+    /// the energy balance's damping in the dam; null without damping.
+    const SparseMatrix *
+    dam_damping() const
+    {
+      return dam_damping_matrix.m() > 0 ? &dam_damping_matrix : nullptr;
+    }
+    /// On massed rock with the dam's mass term relative to the ground
+    /// (`Damping/Mass proportional term`): the reference motion v_r, else null.
+    const physics::foundation::ReferenceMotion *
+    reference_motion() const
+    {
+      return reference.get();
+    }
+    /// alpha_d M_dam iota_d, d = x, y, z: the load v_r,d(t) alpha_d M_dam iota_d
+    /// that makes the dam's mass term act on v - iota v_r (with
+    /// reference_motion() only).
+    const std::array<Vector, dim> &
+    reference_loads() const
+    {
+      return reference_forces;
+    }
     /// Free M, D and K, once a system that holds them in its blocks (the
     /// coupled dam-water system) replaces them for the rest of the run:
     /// mass(), damping() and stiffness() are empty from then on.
@@ -120,6 +143,11 @@ namespace archdam::analysis
     {
       return *motion;
     }
+    /// How much later than the record the ground motion reaches the free
+    /// surface: on massed rock the longest travel time of the free field
+    /// from the model's bottom (FreeField::delay()), else 0.
+    double
+    ground_motion_delay() const;
     /// The massed foundation's outer boundary, else null.
     physics::foundation::MassedFoundation *
     foundation()
@@ -159,7 +187,7 @@ namespace archdam::analysis
     std::vector<joints::JointFacePair>                     joint_faces;
     std::unique_ptr<fe::FESpace>                           fe_space;
     SparseMatrix                                           mass_matrix, stiffness_matrix,
-      damping_matrix;
+      damping_matrix, dam_damping_matrix;
     Vector                                                 static_forces, weight_forces;
     std::array<Vector, dim>                                influence;
     std::vector<physics::reservoir::InterfacePair>         interfaces;
@@ -167,6 +195,8 @@ namespace archdam::analysis
     std::unique_ptr<loads::GroundMotion>                   motion;
     std::unique_ptr<physics::foundation::FreeField>        free_field;
     std::unique_ptr<physics::foundation::MassedFoundation> massed_foundation;
+    std::unique_ptr<physics::foundation::ReferenceMotion>  reference;
+    std::array<Vector, dim>                                reference_forces;
     std::unique_ptr<output::Monitors>                      monitor;
     std::unique_ptr<joints::NodePairs>                     node_pairs;
   };

@@ -163,6 +163,12 @@ namespace archdam::loads
     const AccelerationRecord &
     record(const unsigned int d) const;
 
+    /// The processing applied to component @p d after reading or
+    /// generating it, in words (ProcessingParameters::description()); the
+    /// same whatever the foundation model.
+    const std::string &
+    processing(const unsigned int d) const;
+
     /// How well generated component @p d matches its target; nullptr if it
     /// is not generated.
     const GenerationReport *
@@ -174,5 +180,6 @@ namespace archdam::loads
     /// Matching reports of the generated components.
     std::array<GenerationReport, 3> reports;
     std::array<bool, 3>             generated = {{false, false, false}};
+    std::array<std::string, 3>      processing_applied;
   };
 } // namespace archdam::loads

@@ -163,6 +163,11 @@ namespace archdam::loads
     bool
     any() const;
 
+    /// What process() applies, in its order, in words ("none" if nothing):
+    /// for the run's log and summary.json.
+    std::string
+    description() const;
+
     /**
      * Declare, in the current subsection of @p prm, the entries "Start time",
      * "End time", "Taper length", "Resample time step", "High-pass corner",

@@ -46,6 +46,20 @@ namespace archdam::physics::foundation
                       "per unit area are added to the dashpots; 0 = dashpots "
                       "only.",
                       Patterns::Double(0.));
+    add_selection(prm, "Free field", free_field, free_field_rock_names(),
+                  "The free field the outer boundary of the massed foundation "
+                  "prescribes: 'through the damped rock' = the control motion "
+                  "deconvolved through the rock's own Rayleigh damping, so that "
+                  "the free surface moves as the control motion; 'undamped' = "
+                  "that of an undamped half-space, which the damped rock "
+                  "attenuates on its way up (doc/theory/foundation.md §4).");
+    prm.add_parameter("Band limit", band_limit,
+                      "Frequency [Hz] above which the deconvolution through the "
+                      "damped rock leaves the damping out (a smooth step to "
+                      "twice it): there it would amplify the incident wave "
+                      "by about exp(w^2 beta depth / (2 c)), and those "
+                      "frequencies reach the surface damped by the rock.",
+                      Patterns::Double(0., Patterns::Double::max_double_value));
   }
 
   std::set<types::boundary_id>

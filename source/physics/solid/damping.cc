@@ -23,6 +23,14 @@ namespace archdam::physics::solid
     return rock ? with_same : dam;
   }
 
+  const SelectionNames<MassDamping> &
+  mass_damping_names()
+  {
+    static const SelectionNames<MassDamping> names{
+      {"relative to the ground", MassDamping::relative}, {"total velocity", MassDamping::total}};
+    return names;
+  }
+
   void
   RayleighDamping::add_parameters(ParameterHandler &prm, const bool rock)
   {
@@ -76,6 +84,14 @@ namespace archdam::physics::solid
   DampingParameters::add_parameters(ParameterHandler &prm)
   {
     RayleighDamping::add_parameters(prm, false);
+    add_selection(prm, "Mass proportional term", mass_term, mass_damping_names(),
+                  "On massed rock, the velocity the dam's mass-proportional "
+                  "damping alpha M acts on: 'relative to the ground' = v - v_r, "
+                  "v_r the free field's mean velocity over the dam-rock "
+                  "interface, so that the dam moving rigidly with the ground "
+                  "is not damped; 'total velocity' = v, which drags the dam "
+                  "as it moves with the ground (doc/theory/solid.md §4). On "
+                  "massless rock the motion is relative and both are the same.");
     prm.enter_subsection("Rock");
     rock.add_parameters(prm, true);
     prm.leave_subsection();

@@ -23,7 +23,7 @@ namespace archdam::physics::solid
   namespace
   {
     /// Add the cell matrices of M and K of the solid cells for which
-    /// @p take(cell) holds, condensed with @p constraints, to the matrices,
+    /// @p take(cell, dofs) holds, condensed with @p constraints, to the matrices,
     /// and with @p damping those of D = alpha_c M_c + beta_c K_c, each cell
     /// with its material's coefficients, to @p damping_matrix.
     template <typename CellFilter>
@@ -51,7 +51,7 @@ namespace archdam::physics::solid
           {
             dofs.resize(cell->get_fe().n_dofs_per_cell());
             cell->get_dof_indices(dofs);
-            if (!take(dofs))
+            if (!take(cell, dofs))
               continue;
             hp_fe_values.reinit(cell);
             const FEValues<dim>   &fv  = hp_fe_values.get_present_fe_values();
@@ -103,7 +103,51 @@ namespace archdam::physics::solid
       if (damping)
         damping_matrix->compress(VectorOperation::add);
     }
+
+    /// @p A on the pattern of the solid cells for which @p take(cell, dofs)
+    /// holds, condensed with @p constraints.
+    template <typename CellFilter>
+    void
+    reinit_on_cells(const fe::FESpace               &space,
+                    const AffineConstraints<double> &constraints,
+                    const CellFilter                &take,
+                    SparseMatrix                    &A)
+    {
+      IndexSet rows = space.locally_relevant;
+      for (const auto &line : constraints.get_lines())
+        for (const auto &entry : line.entries)
+          rows.add_index(entry.first);
+      rows.compress();
+      DynamicSparsityPattern               dsp(rows);
+      std::vector<types::global_dof_index> dofs;
+      for (const auto &cell : space.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
+          {
+            dofs.resize(cell->get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+            if (take(cell, dofs))
+              constraints.add_entries_local_to_global(dofs, dsp, false);
+          }
+      SparsityTools::distribute_sparsity_pattern(dsp, space.locally_owned, space.comm, rows);
+      A.reinit(space.locally_owned, space.locally_owned, dsp, space.comm);
+    }
   } // namespace
+
+  void
+  assemble_dam_damping(const fe::FESpace        &space,
+                       const MaterialParameters &materials,
+                       const DampingParameters  &damping,
+                       SparseMatrix             &dam_damping)
+  {
+    const auto dam = [](const auto &cell, const auto &) { return ids::is_dam(cell->material_id()); };
+    reinit_on_cells(space, space.constraints, dam, dam_damping);
+    // M and K of the dam alone are needed only for the cells' D.
+    SparseMatrix mass, stiffness;
+    mass.reinit(dam_damping);
+    stiffness.reinit(dam_damping);
+    add_cell_matrices(space, materials, InertiaOf::dam, space.constraints, dam, mass, stiffness,
+                      &damping, &dam_damping);
+  }
 
   void
   assemble_mass_and_stiffness(const fe::FESpace        &space,
@@ -119,7 +163,7 @@ namespace archdam::physics::solid
     if (damping)
       damping_matrix->reinit(stiffness);
     add_cell_matrices(space, materials, inertia, space.constraints,
-                      [](const std::vector<types::global_dof_index> &) { return true; },
+                      [](const auto &, const auto &) { return true; },
                       mass, stiffness, damping, damping_matrix);
   }
 
@@ -136,7 +180,7 @@ namespace archdam::physics::solid
     std::vector<bool> is_column(space.dof_handler.n_dofs(), false);
     for (const auto i : columns)
       is_column[i] = true;
-    const auto touches = [&](const std::vector<types::global_dof_index> &dofs) {
+    const auto touches = [&](const auto &, const std::vector<types::global_dof_index> &dofs) {
       for (const auto i : dofs)
         if (is_column[i])
           return true;
@@ -145,24 +189,7 @@ namespace archdam::physics::solid
 
     // The model's constraints without the lines of the columns themselves.
     const AffineConstraints<double> others = fe::constraints_without(space, is_column);
-
-    IndexSet rows = space.locally_relevant;
-    for (const auto &line : others.get_lines())
-      for (const auto &entry : line.entries)
-        rows.add_index(entry.first);
-    rows.compress();
-    DynamicSparsityPattern               dsp(rows);
-    std::vector<types::global_dof_index> dofs;
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->active_fe_index() == fe::FESpace::solid_index)
-        {
-          dofs.resize(cell->get_fe().n_dofs_per_cell());
-          cell->get_dof_indices(dofs);
-          if (touches(dofs))
-            others.add_entries_local_to_global(dofs, dsp, false);
-        }
-    SparsityTools::distribute_sparsity_pattern(dsp, space.locally_owned, space.comm, rows);
-    stiffness.reinit(space.locally_owned, space.locally_owned, dsp, space.comm);
+    reinit_on_cells(space, others, touches, stiffness);
     mass.reinit(stiffness);
     if (damping)
       damping_columns->reinit(stiffness);

@@ -47,6 +47,24 @@ namespace archdam::physics::foundation
     return names;
   }
 
+  /// `Foundation/Free field`: the half-space whose free field the massed
+  /// foundation's boundary prescribes (doc/theory/foundation.md §4).
+  enum class FreeFieldRock
+  {
+    damped,  ///< the rock's own Rayleigh damping: the control motion deconvolved
+    undamped ///< an undamped half-space (the motion arrives attenuated)
+  };
+
+  /// The names of FreeFieldRock in the case file.
+  inline const SelectionNames<FreeFieldRock> &
+  free_field_rock_names()
+  {
+    static const SelectionNames<FreeFieldRock> names{
+      {"through the damped rock", FreeFieldRock::damped},
+      {"undamped", FreeFieldRock::undamped}};
+    return names;
+  }
+
   /**
    * The `Foundation` subsection (doc/theory/foundation.md §1).
    *
@@ -77,6 +95,10 @@ namespace archdam::physics::foundation
     double stabilization_rate = 2.;
     /// R of the viscous-spring boundary in m; 0 = dashpots only.
     double spring_distance = 0.;
+    /// The free field's half-space, and the band limit [Hz] of the
+    /// deconvolution through the damped rock.
+    FreeFieldRock free_field = FreeFieldRock::damped;
+    double        band_limit = 20.;
 
     void
     add_parameters(dealii::ParameterHandler &prm);

@@ -24,6 +24,20 @@ namespace archdam::physics::solid
   const SelectionNames<DampingMode> &
   damping_mode_names(bool rock);
 
+  /// `Damping/Mass proportional term`: the velocity the dam's alpha M acts
+  /// on when the rock has mass and the unknowns are the total motion
+  /// (doc/theory/solid.md §4). Elsewhere (massless rock) the unknowns are
+  /// relative to the ground and both are the same.
+  enum class MassDamping
+  {
+    relative, ///< v - v_r, v_r the free field's mean over the dam-rock interface
+    total     ///< the total velocity v (ArchDam up to 2026-12)
+  };
+
+  /// The names of MassDamping in the case file.
+  const SelectionNames<MassDamping> &
+  mass_damping_names();
+
   /**
    * One Rayleigh damping D = alpha M + beta K (doc/theory/solid.md §4), with
    * alpha and beta given directly, derived from a damping ratio zeta reached
@@ -58,6 +72,8 @@ namespace archdam::physics::solid
   struct DampingParameters : RayleighDamping
   {
     RayleighDamping rock{DampingMode::same_as_dam};
+    /// What the dam's mass term acts on (massed rock).
+    MassDamping mass_term = MassDamping::relative;
 
     void
     add_parameters(dealii::ParameterHandler &prm);

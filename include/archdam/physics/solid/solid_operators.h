@@ -34,6 +34,20 @@ namespace archdam::physics::solid
                               SparseMatrix               *damping_matrix = nullptr);
 
   /**
+   * The dam's own damping matrix D_dam = sum over the dam's cells of
+   * alpha_d M_e + beta_d K_e (no Westergaard mass), condensed with the
+   * model's constraints, on the pattern of the dam's cells only: the
+   * energy balance's damping in the dam, and with D_dam iota_d = alpha_d
+   * M_dam iota_d the load of the dam's mass term relative to the ground
+   * (doc/theory/solid.md §4).
+   */
+  void
+  assemble_dam_damping(const fe::FESpace        &space,
+                       const MaterialParameters &materials,
+                       const DampingParameters  &damping,
+                       SparseMatrix             &dam_damping);
+
+  /**
    * The full (unconstrained) columns of M and K at the constrained DOFs
    * @p columns: the entries of the cells touching them, condensed with the
    * model's constraints other than the lines of @p columns. They carry the
