@@ -3,12 +3,14 @@
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>
 #include <archdam/geometry/support.h>
+#include <archdam/loads/response_spectrum.h>
 #include <archdam/output/mesh_report.h>
 #include <archdam/physics/reservoir/wetted_face_loads.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
 #include <tuple>
 #include <limits>
 
@@ -52,6 +54,62 @@ namespace archdam::analysis
                    << record.time_of_peak() << " s, PGV " << 100. * pgv << " cm/s, PGD "
                    << 100. * pgd << " cm, " << duration << " s; processing: "
                    << motion.processing(d) << std::endl;
+          }
+    }
+
+    /**
+     * What the massed foundation's free field makes of the control motion
+     * (doc/theory/foundation.md §4): per component its peak acceleration
+     * and 5 %-damped pseudo-acceleration spectrum (0.05 to 2 s) at the free
+     * surface and at the dam's base (@p z_base), as ratios to the control
+     * motion's, on the screen and in the summary under "free field".
+     */
+    void
+    report_free_field(const physics::foundation::FreeField &free_field,
+                      const loads::GroundMotion            &motion,
+                      const double                          z_surface,
+                      const double                          z_base,
+                      const ConditionalOStream             &screen,
+                      output::Summary                      &summary)
+    {
+      const auto periods = loads::log_spaced_periods(0.05, 2., 40);
+      for (unsigned int d = 0; d < dim; ++d)
+        if (motion.has_component(d))
+          {
+            const auto  &control = motion.record(d);
+            const double dt      = control.times.size() > 1 ? control.times[1] - control.times[0] : 0.;
+            if (!(dt > 0.))
+              continue;
+            const auto target = loads::response_spectrum(control, periods, 0.05);
+            const std::string key = std::string("free field/") + "xyz"[d] + "/";
+            summary.set(key + "dam base z [m]", z_base);
+            std::ostringstream line;
+            line << std::setprecision(3);
+            for (const auto &[where, z] : {std::pair<std::string, double>{"free surface", z_surface},
+                                           {"dam's base", z_base}})
+              {
+                // The free field at z, sampled as the record, from the delay on.
+                loads::AccelerationRecord at_z{control.source, control.times, control.values};
+                for (unsigned int k = 0; k < at_z.times.size(); ++k)
+                  at_z.values[k] =
+                    free_field.acceleration(z, at_z.times[k] + free_field.delay(d))[d];
+                const auto   spectrum = loads::response_spectrum(at_z, periods, 0.05);
+                double       low = std::numeric_limits<double>::max(), high = 0.;
+                for (unsigned int i = 0; i < periods.size(); ++i)
+                  {
+                    const double r = spectrum.pseudo_acceleration[i] / target.pseudo_acceleration[i];
+                    low            = std::min(low, r);
+                    high           = std::max(high, r);
+                  }
+                const double pga = at_z.peak() / control.peak();
+                summary.set(key + where + "/PGA ratio to the control motion", pga);
+                summary.set(key + where + "/spectrum ratio 0.05-2 s, least", low);
+                summary.set(key + where + "/spectrum ratio 0.05-2 s, largest", high);
+                line << (z == z_surface ? "" : "; ") << "at the " << where << " (z = " << z
+                     << " m) PGA " << pga << " of the control motion's, 5 % spectrum " << low
+                     << " to " << high << " of it (0.05-2 s)";
+              }
+            screen << "Free field in " << "xyz"[d] << ": " << line.str() << "." << std::endl;
           }
     }
   } // namespace
@@ -201,7 +259,20 @@ namespace archdam::analysis
     motion = std::make_unique<loads::GroundMotion>(p.ground_motion, p.base_directory);
     report_ground_motion(*motion, screen, summary);
     if (p.foundation.rock_has_mass())
-      setup_massed_foundation(p, inertia, screen);
+      {
+        setup_massed_foundation(p, inertia, screen);
+        double z_base = std::numeric_limits<double>::max(), z_surface = -z_base;
+        for (const auto &cell : mesh.active_cell_iterators())
+          for (const auto v : cell->vertex_indices())
+            {
+              if (ids::is_dam(cell->material_id()))
+                z_base = std::min(z_base, cell->vertex(v)[dim - 1]);
+              if (cell->material_id() == ids::rock)
+                z_surface = std::max(z_surface, cell->vertex(v)[dim - 1]);
+            }
+        if (n_dam > 0)
+          report_free_field(*free_field, *motion, z_surface, z_base, screen, summary);
+      }
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
   }
 
