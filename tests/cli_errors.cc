@@ -60,6 +60,9 @@ main(int argc, char **argv)
   run_archdam("an end time without ground motion",
               {"good.prm", "--set", "Time integration/End time=0"});
   run_archdam("a valid case runs", {"good.prm", "--set", "Time integration/Time step=0.01"});
+  run_archdam("the free-field check of a case on massless rock",
+              {"good.prm", "--free-field-check"});
+  run_archdam("the free-field check with --resume", {"good.prm", "--free-field-check", "--resume"});
 
   // --help: every option of the usage lines has a line of its own, with an
   // example and where the documentation is; --version: ArchDam's version and
@@ -72,7 +75,8 @@ main(int argc, char **argv)
   const auto [help_code, help] = standard_output({"archdam", "--help"});
   bool every_option = true;
   for (const std::string option :
-       {"--set", "--mesh-only", "--resume", "--print-parameters", "--help", "--version"})
+       {"--set", "--mesh-only", "--resume", "--free-field-check", "--print-parameters", "--help",
+        "--version"})
     every_option = every_option && help.find("\n  " + option) != std::string::npos;
   archdam::testing::log() << "* --help\n  exit code " << help_code
                           << "\n  every option on a line of its own: "

@@ -276,6 +276,16 @@ namespace archdam::analysis
     monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
   }
 
+  physics::foundation::FreeFieldDamping
+  Model::free_field_damping(const Parameters &p)
+  {
+    physics::foundation::FreeFieldDamping rock_damping;
+    rock_damping.band_limit = p.foundation.band_limit;
+    if (p.foundation.free_field == physics::foundation::FreeFieldRock::damped)
+      std::tie(rock_damping.alpha, rock_damping.beta) = p.damping.rock_coefficients();
+    return rock_damping;
+  }
+
   double
   Model::ground_motion_delay() const
   {
@@ -301,10 +311,7 @@ namespace archdam::analysis
           if (cell->material_id() == ids::rock)
             z_top = std::max(z_top, cell->vertex(v)[dim - 1]);
         }
-    physics::foundation::FreeFieldDamping rock_damping;
-    rock_damping.band_limit = p.foundation.band_limit;
-    if (p.foundation.free_field == physics::foundation::FreeFieldRock::damped)
-      std::tie(rock_damping.alpha, rock_damping.beta) = p.damping.rock_coefficients();
+    const physics::foundation::FreeFieldDamping rock_damping = free_field_damping(p);
     free_field = std::make_unique<physics::foundation::FreeField>(
       physics::foundation::FreeField::of_ground_motion(*motion, p.materials.rock, rock_damping,
                                                        z_top, z_bottom));

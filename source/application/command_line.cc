@@ -27,7 +27,8 @@ namespace archdam
   {
     const char *usage =
       "Usage:\n"
-      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only | --resume]\n"
+      "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only | --resume |\n"
+      "                   --free-field-check]\n"
       "  archdam --print-parameters [text|json|xml|latex]\n"
       "  archdam --help | --version\n";
 
@@ -43,6 +44,10 @@ namespace archdam
       "                            then stop (no analysis)\n"
       "  --resume                  continue a run from its last checkpoint in the same\n"
       "                            output folder\n"
+      "  --free-field-check        run the case's rock alone (a column, no dam) under\n"
+      "                            its ground motion: the motion at the free surface and\n"
+      "                            at the dam's base against the control motion and the\n"
+      "                            free field (massed rock), then stop\n"
       "  --print-parameters [FMT]  every parameter with its default, allowed values and\n"
       "                            documentation (FMT: text (default), json, xml, latex)\n"
       "  --help, -h                this text\n"
@@ -99,7 +104,7 @@ namespace archdam
 
       std::string              case_file;
       std::vector<std::string> overrides;
-      bool                     mesh_only = false, resume = false;
+      bool                     mesh_only = false, resume = false, free_field_check = false;
       for (unsigned int i = 0; i < args.size(); ++i)
         if (args[i] == "--set")
           {
@@ -113,6 +118,8 @@ namespace archdam
           mesh_only = true;
         else if (args[i] == "--resume")
           resume = true;
+        else if (args[i] == "--free-field-check")
+          free_field_check = true;
         else if (args[i].rfind("-", 0) == 0)
           throw InputError("Unknown option '" + args[i] + "'.\n" + usage);
         else if (case_file.empty())
@@ -124,6 +131,9 @@ namespace archdam
         throw InputError(std::string("No case file given.\n") + usage);
       if (mesh_only && resume)
         throw InputError("--mesh-only and --resume exclude each other.");
+      if (free_field_check && (mesh_only || resume))
+        throw InputError("--free-field-check runs no analysis: it excludes --mesh-only and "
+                         "--resume.");
 
       const Parameters p = read_parameters(case_file, overrides);
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -134,6 +144,8 @@ namespace archdam
       interrupt::catch_signals();
       if (mesh_only)
         simulation.run_mesh_only();
+      else if (free_field_check)
+        simulation.run_free_field_check();
       else
         simulation.run(resume);
       return 0;

@@ -143,6 +143,11 @@ namespace archdam::analysis
     {
       return *motion;
     }
+    /// The rock's damping as the massed foundation's free field sees it
+    /// (`Foundation/Free field`, `Band limit`, the rock's coefficients of
+    /// `Damping`).
+    static physics::foundation::FreeFieldDamping
+    free_field_damping(const Parameters &p);
     /// How much later than the record the ground motion reaches the free
     /// surface: on massed rock the longest travel time of the free field
     /// from the model's bottom (FreeField::delay()), else 0.

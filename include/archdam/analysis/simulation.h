@@ -51,6 +51,14 @@ namespace archdam::analysis
     /// (output/mesh_writer.h) with summary.json, and stop.
     void
     run_mesh_only();
+    /// `archdam CASE.prm --free-field-check`: the case's rock alone as a
+    /// column (physics/foundation/site_column.h) under the case's motion,
+    /// against the control motion at the free surface and the free field at
+    /// the dam's base; histories and spectra as CSV in the output directory
+    /// (doc/theory/foundation.md §4). InputError on massless rock or without
+    /// a ground motion.
+    void
+    run_free_field_check();
 
     /// The model the stages run on (setup_model() or run() built it).
     const Model &

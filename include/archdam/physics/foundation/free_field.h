@@ -143,6 +143,17 @@ namespace archdam::physics::foundation
     {
       return T[d];
     }
+    /// The free surface's and the model bottom's elevations [m].
+    double
+    surface() const
+    {
+      return z_s;
+    }
+    double
+    bottom() const
+    {
+      return z_b;
+    }
     /// Whether the free field is deconvolved through damped rock.
     bool
     damped() const
