@@ -2,7 +2,8 @@
 """Draw the stress envelope of a dynamic run on the dam faces (PNG, Agg).
 
 Reads `stress_envelope_dynamic.csv` (columns: face, x [m], y [m], z [m],
-max s1 [Pa], time of max s1 [s], min s3 [Pa], time of min s3 [s]) and draws
+max s1 [Pa], time of max s1 [s], min s3 [Pa], time of min s3 [s], then the
+arch and cantilever extremes) and draws
 the largest major principal stress s1 over the run (tension positive, MPa) on
 the upstream and the downstream face as two panels, each face seen as an
 engineer looks at it: the upstream face from the reservoir (looking

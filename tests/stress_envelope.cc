@@ -37,14 +37,29 @@
 //    upstream and one downstream face, the top row one crest face each:
 //    14 x 4 faces upstream and downstream, 14 crest faces, none on a side,
 //    2 x 2 points per face. The crest points lie at z = H = 235 m.
+// D. Arch and cantilever stresses on inclined, rotated faces. A block of
+//    dam cells (Q2, 2 x 2 x 2 on [0, 4] x [0, 6] x [0, 8] m) given a batter
+//    (x -> x + 0.25 z) and turned 30 degrees about the vertical, with the
+//    linear displacement u = G x (exact in the finite element space, so the
+//    stress C sym(G) is the same everywhere). At every point of the inclined
+//    upstream and downstream faces the envelope's arch stress must be
+//    a^T sigma a and its cantilever stress c^T sigma c, with the face's
+//    normal n from the map (the plane x = x0 + 0.25 z, turned), a = e_z x n
+//    normalized and c = n x a: to 1e-9 of |sigma|. The crest has none (zero),
+//    the ends (y = 0 and 6 m, turned) their horizontal tangents.
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>
 #include <archdam/geometry/splitter.h>
+#include <archdam/output/stress_envelope.h>
 #include <archdam/joints/joint_faces.h>
 #include <archdam/parameters/parameters.h>
 
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -83,8 +98,9 @@ namespace
     AssertThrow(in, ExcMessage("missing " + file));
     std::string line;
     std::getline(in, line);
-    AssertThrow(line == "face,x [m],y [m],z [m],max s1 [Pa],time of max s1 [s],min s3 [Pa],"
-                        "time of min s3 [s]",
+    AssertThrow(line.rfind("face,x [m],y [m],z [m],max s1 [Pa],time of max s1 [s],min s3 [Pa],"
+                           "time of min s3 [s],max arch [Pa]",
+                           0) == 0,
                 ExcMessage("unexpected header " + line));
     std::vector<Row> rows;
     while (std::getline(in, line))
@@ -93,7 +109,7 @@ namespace
         std::vector<std::string> f;
         for (std::string field; std::getline(s, field, ',');)
           f.push_back(field);
-        AssertThrow(f.size() == 8, ExcMessage("bad row " + line));
+        AssertThrow(f.size() == 16, ExcMessage("bad row " + line));
         rows.push_back({f[0], Point<dim>(std::stod(f[1]), std::stod(f[2]), std::stod(f[3])),
                         std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7])});
       }
@@ -359,6 +375,108 @@ namespace
             << "): " << (count[part] == n ? "yes" : "NO") << std::endl;
     check_below("crest points: max |z - 235 m| [m]", crest_z_error, 1e-9);
   }
+
+  void
+  arch_and_cantilever()
+  {
+    log() << "D. arch and cantilever stresses on a battered block turned 30 degrees" << std::endl;
+    const double batter = 0.25;
+    // A turn about the vertical by @p angle.
+    const auto turn = [](const Tensor<1, dim> &x, const double angle = M_PI / 6) {
+      return Tensor<1, dim>({std::cos(angle) * x[0] - std::sin(angle) * x[1],
+                             std::sin(angle) * x[0] + std::cos(angle) * x[1], x[2]});
+    };
+    parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
+    GridGenerator::subdivided_hyper_rectangle(tria, {2, 2, 2}, Point<dim>(), Point<dim>(4, 6, 8));
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        cell->set_material_id(ids::first_dam_block);
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            cell->face(f)->set_boundary_id(ids::free_surface_solid);
+      }
+    GridTools::transform(
+      [&](const Point<dim> &p) {
+        return Point<dim>(turn(Tensor<1, dim>({p[0] + batter * p[2], p[1], p[2]})));
+      },
+      tria);
+
+    physics::solid::MaterialParameters materials;
+    materials.concrete = {22e9, 0.167, 2446.5};
+    fe::FiniteElementParameters fep;
+    fe::FESpace                 space(tria, fep);
+    space.setup({}, [](AffineConstraints<double> &) {});
+    output::StressEnvelope envelope(space, materials, ".");
+
+    // u = G x at every node (Q2 on an affine map: exact).
+    Tensor<2, dim> G;
+    G[0][0] = 1e-4, G[0][1] = 3e-5, G[0][2] = -2e-5, G[1][0] = 1e-5, G[1][1] = -5e-5;
+    G[1][2] = 4e-5, G[2][0] = 2e-5, G[2][1] = -1e-5, G[2][2] = -8e-5;
+    const SymmetricTensor<2, dim> sigma = materials.concrete.stress(symmetrize(G));
+    time::NewmarkState            s;
+    for (archdam::Vector *v : {&s.u, &s.v, &s.a})
+      space.reinit(*v);
+    envelope.record(output::StepRecord{s});
+    const auto &fe      = space.fe_collection[fe::FESpace::solid_index];
+    const auto  support = fe.get_unit_support_points();
+    const MappingQ1<dim>                 mapping;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : space.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (space.locally_owned.is_element(dofs[i]))
+              s.u(dofs[i]) = (G * mapping.transform_unit_to_real_cell(cell, support[i]))
+                [fe.system_to_component_index(i).first];
+        }
+    s.u.compress(VectorOperation::insert);
+    s.time = 1.;
+    envelope.record(output::StepRecord{s});
+
+    // The faces' outward normals: x = x0 + batter z (up- and downstream),
+    // y = 0 and 6 (ends), turned.
+    const auto unit   = [&](const Tensor<1, dim> &n) { return turn(n / n.norm()); };
+    const auto stress = [&](const Tensor<1, dim> &t) { return t * (sigma * t); };
+    const Tensor<1, dim> upstream   = unit(Tensor<1, dim>({-1., 0., batter})),
+                         downstream = unit(Tensor<1, dim>({1., 0., -batter}));
+    double       error = 0.;
+    unsigned int n_up = 0, n_down = 0, n_crest = 0;
+    for (const auto &e : envelope.gather())
+      {
+        // Back to the block's own frame: which face the point is on.
+        const Tensor<1, dim> q  = turn(Tensor<1, dim>(e.where), -M_PI / 6);
+        const double x0 = q[0] - batter * q[2];
+        Tensor<1, dim> n;
+        if (e.part == output::StressEnvelope::Part::upstream && std::abs(x0) < 1e-9)
+          n = upstream, ++n_up;
+        else if (e.part == output::StressEnvelope::Part::downstream && std::abs(x0 - 4) < 1e-9)
+          n = downstream, ++n_down;
+        else if (e.part == output::StressEnvelope::Part::crest && std::abs(q[2] - 8) < 1e-9)
+          {
+            ++n_crest;
+            error = std::max({error, std::abs(e.arch.max), std::abs(e.arch.min),
+                              std::abs(e.cantilever.max), std::abs(e.cantilever.min)});
+            continue;
+          }
+        else
+          continue;
+        Tensor<1, dim> a = cross_product_3d(Tensor<1, dim>({0., 0., 1.}), n);
+        a /= a.norm();
+        const Tensor<1, dim> c = cross_product_3d(n, a);
+        // Over the two states (0 and sigma) the extremes are 0 and the value.
+        const double sa = stress(a), sc = stress(c);
+        error = std::max({error, std::abs(e.arch.max - std::max(sa, 0.)),
+                          std::abs(e.arch.min - std::min(sa, 0.)),
+                          std::abs(e.cantilever.max - std::max(sc, 0.)),
+                          std::abs(e.cantilever.min - std::min(sc, 0.))});
+      }
+    log() << "  points: upstream " << n_up << ", downstream " << n_down << ", crest " << n_crest
+          << " (expected 36, 36, 36): "
+          << testing::yes(n_up == 36 && n_down == 36 && n_crest == 36) << std::endl;
+    check_below("  max |envelope - closed form| / |sigma| (arch and cantilever, crest zero)",
+                error / sigma.norm(), 1e-9);
+  }
 } // namespace
 
 int
@@ -368,5 +486,6 @@ main(int argc, char **argv)
   static_column();
   shaken_block();
   arch_dam_with_water();
+  arch_and_cantilever();
   return 0;
 }

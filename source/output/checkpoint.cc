@@ -22,7 +22,7 @@ namespace archdam::output
   namespace
   {
     constexpr char          magic[8] = {'A', 'R', 'C', 'H', 'C', 'K', 'P', 'T'};
-    constexpr std::uint32_t format_version = 3;
+    constexpr std::uint32_t format_version = 4;
 
     struct Header
     {

@@ -9,6 +9,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <memory>
 #include <tuple>
@@ -41,9 +42,37 @@ namespace archdam::output
       return id == ids::free_surface_solid || id == ids::solid_interface;
     }
 
-    /// Part, x, y, z, max s1, its time, min s3, its time: gathered as doubles.
-    constexpr unsigned int values_per_entry = 8;
+    /// Part, x, y, z, max s1, its time, min s3, its time, and the arch's and
+    /// the cantilever's extremes: gathered as doubles.
+    constexpr unsigned int values_per_entry = 16;
   } // namespace
+
+  void
+  StressEnvelope::Extremes::take(const double value, const double time, const bool first)
+  {
+    if (first || value > max)
+      {
+        max      = value;
+        time_max = time;
+      }
+    if (first || value < min)
+      {
+        min      = value;
+        time_min = time;
+      }
+  }
+
+  std::pair<Tensor<1, dim>, Tensor<1, dim>>
+  StressEnvelope::face_directions(const Tensor<1, dim> &n)
+  {
+    if (part_of(n) == Part::crest)
+      return {};
+    const Tensor<1, dim> arch = cross_product_3d(Point<dim>(0, 0, 1), n);
+    const double         length = arch.norm();
+    if (length < 1e-12)
+      return {};
+    return {arch / length, cross_product_3d(n, arch / length)};
+  }
 
   std::string
   StressEnvelope::name(const Part part)
@@ -85,7 +114,9 @@ namespace archdam::output
           for (unsigned int i = 0; i < fe.dofs_per_cell; ++i)
             unit_gradients[f][k].push_back(fe.shape_grad(i, points.point(k)));
       }
+    // The normals at the face rule's points, in the order of at_face[f]'s.
     FEFaceValues<dim> normals(fe, q, update_normal_vectors);
+
 
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && ids::is_dam(cell->material_id()))
@@ -108,6 +139,7 @@ namespace archdam::output
                 {
                   entries.push_back({part, at_face[f]->quadrature_point(k)});
                   inverse_jacobians.push_back(Tensor<2, dim>(at_face[f]->inverse_jacobian(k)));
+                  directions.push_back(face_directions(normals.normal_vector(k)));
                 }
             }
     space.reinit_ghosted(ghosted_u);
@@ -131,8 +163,12 @@ namespace archdam::output
               unit_gradient[component[i]] += values[i] * gradients[k][i];
             Entry &e = entries[face.first_entry + k];
             // Hooke's law and the principal stresses (doc/theory/solid.md §6).
-            const auto [s1, s3] = physics::solid::principal_stresses(face.material.stress(
-              symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k])));
+            const SymmetricTensor<2, dim> sigma = face.material.stress(
+              symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k]));
+            const auto [s1, s3] = physics::solid::principal_stresses(sigma);
+            const auto &[arch, cantilever] = directions[face.first_entry + k];
+            e.arch.take(arch * (sigma * arch), t, !started);
+            e.cantilever.take(cantilever * (sigma * cantilever), t, !started);
             if (!started || s1 > e.max_s1)
               {
                 e.max_s1      = s1;
@@ -156,14 +192,17 @@ namespace archdam::output
     for (const Entry &e : entries)
       local.insert(local.end(), {static_cast<double>(e.part), e.where[0], e.where[1],
                                  e.where[2], e.max_s1, e.time_max_s1, e.min_s3,
-                                 e.time_min_s3});
+                                 e.time_min_s3, e.arch.max, e.arch.time_max, e.arch.min,
+                                 e.arch.time_min, e.cantilever.max, e.cantilever.time_max,
+                                 e.cantilever.min, e.cantilever.time_min});
     std::vector<Entry> all;
     for (const auto &from_rank : Utilities::MPI::all_gather(space.comm, local))
       for (std::size_t i = 0; i < from_rank.size(); i += values_per_entry)
         {
           const double *v = &from_rank[i];
           all.push_back({static_cast<Part>(static_cast<int>(v[0])), Point<dim>(v[1], v[2], v[3]),
-                         v[4], v[5], v[6], v[7]});
+                         v[4], v[5], v[6], v[7], {v[8], v[9], v[10], v[11]},
+                         {v[12], v[13], v[14], v[15]}});
         }
     std::sort(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
       return std::make_tuple(a.part, a.where[2], a.where[1], a.where[0]) <
@@ -179,12 +218,19 @@ namespace archdam::output
     on_rank_zero(space.comm, [&] {
       write_atomically(directory + "/stress_envelope_dynamic.csv", [&](std::ostream &out) {
         out << "face,x [m],y [m],z [m],max s1 [Pa],time of max s1 [s],min s3 [Pa],"
-               "time of min s3 [s]\n"
+               "time of min s3 [s],max arch [Pa],time of max arch [s],min arch [Pa],"
+               "time of min arch [s],max cantilever [Pa],time of max cantilever [s],"
+               "min cantilever [Pa],time of min cantilever [s]\n"
             << std::setprecision(10);
         for (const Entry &e : all)
-          out << name(e.part) << ',' << e.where[0] << ',' << e.where[1] << ',' << e.where[2]
-              << ',' << e.max_s1 << ',' << e.time_max_s1 << ',' << e.min_s3 << ','
-              << e.time_min_s3 << '\n';
+          {
+            out << name(e.part) << ',' << e.where[0] << ',' << e.where[1] << ',' << e.where[2]
+                << ',' << e.max_s1 << ',' << e.time_max_s1 << ',' << e.min_s3 << ','
+                << e.time_min_s3;
+            for (const Extremes *x : {&e.arch, &e.cantilever})
+              out << ',' << x->max << ',' << x->time_max << ',' << x->min << ',' << x->time_min;
+            out << '\n';
+          }
       });
     });
 
@@ -217,6 +263,23 @@ namespace archdam::output
               largest->where);
         place(key + "min minor principal stress [Pa]", smallest->min_s3, smallest->time_min_s3,
               smallest->where);
+        if (part != Part::upstream && part != Part::downstream)
+          continue;
+        for (const auto &[what, of] :
+             {std::pair<std::string, Extremes Entry::*>{"arch", &Entry::arch},
+              {"cantilever", &Entry::cantilever}})
+          {
+            const auto tension = std::max_element(all.begin(), all.end(), [&](const Entry &a, const Entry &b) {
+              return (a.part != part ? -HUGE_VAL : (a.*of).max) < (b.part != part ? -HUGE_VAL : (b.*of).max);
+            });
+            const auto compression = std::min_element(all.begin(), all.end(), [&](const Entry &a, const Entry &b) {
+              return (a.part != part ? HUGE_VAL : (a.*of).min) < (b.part != part ? HUGE_VAL : (b.*of).min);
+            });
+            place(key + "largest " + what + " stress [Pa]", ((*tension).*of).max,
+                  ((*tension).*of).time_max, tension->where);
+            place(key + "smallest " + what + " stress [Pa]", ((*compression).*of).min,
+                  ((*compression).*of).time_min, compression->where);
+          }
       }
     const auto peak = std::max_element(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
       return a.max_s1 < b.max_s1;

@@ -64,13 +64,35 @@ namespace archdam::output
     static std::string
     name(Part part);
 
+    /// The largest and smallest value of one stress over the stage, with
+    /// their times (a tie keeps the earlier).
+    struct Extremes
+    {
+      double max = 0., time_max = 0., min = 0., time_min = 0.;
+      /// Take @p value at @p time (@p first: the first value taken).
+      void
+      take(double value, double time, bool first);
+    };
+
     struct Entry
     {
       Part               part;
       dealii::Point<dim> where;
       double             max_s1 = 0., time_max_s1 = 0.;
       double             min_s3 = 0., time_min_s3 = 0.;
+      /// The normal stresses along the face's horizontal tangent (arch) and
+      /// along the tangent normal to it (cantilever), upstream and
+      /// downstream faces only (zero elsewhere; face_directions()).
+      Extremes arch, cantilever;
     };
+
+    /// The arch direction of a face with unit outward normal @p n, its
+    /// horizontal tangent e_z x n / |e_z x n|, and the cantilever direction
+    /// n x arch, the tangent in the face normal to it (doc/theory/results.md
+    /// §3); for a normal within 45 degrees of the vertical (crest), where
+    /// the face has no horizontal tangent of its own, both zero.
+    static std::pair<dealii::Tensor<1, dim>, dealii::Tensor<1, dim>>
+    face_directions(const dealii::Tensor<1, dim> &n);
 
     StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials,
                    const std::string &directory);
@@ -118,6 +140,8 @@ namespace archdam::output
     std::vector<Entry>        entries; // this rank's points
     /// d(unit coordinates)/dx at each entry's point.
     std::vector<dealii::Tensor<2, dim>> inverse_jacobians;
+    /// The arch and cantilever directions at each entry's point.
+    std::vector<std::pair<dealii::Tensor<1, dim>, dealii::Tensor<1, dim>>> directions;
     /// Unit-cell shape gradients [face number][point][local DOF], and the
     /// displacement component of each local DOF.
     std::array<std::vector<std::vector<dealii::Tensor<1, dim>>>, 6> unit_gradients;
