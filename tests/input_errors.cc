@@ -100,6 +100,11 @@ main(int argc, char **argv)
 
   // Values out of range, inconsistent values
   run_set("a time step of 0", "Time integration/Time step=0");
+  run_archdam("the demand-capacity evaluation without a tensile strength",
+              {"good.prm", "--set", "Evaluation/Evaluate=true"});
+  run_archdam("a DCR level of 0",
+              {"good.prm", "--set", "Evaluation/Evaluate=true", "--set",
+               "Evaluation/Tensile strength=3e6", "--set", "Evaluation/DCR levels=0, 1.5, 2"});
   run_set("an end time shorter than one time step", "Time integration/End time=0.004");
   run_archdam("damping frequencies in the wrong order",
       {"good.prm", "--set", "Damping/Mode=damping ratio", "--set",

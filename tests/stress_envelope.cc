@@ -47,13 +47,26 @@
 //    normal n from the map (the plane x = x0 + 0.25 z, turned), a = e_z x n
 //    normalized and c = n x a: to 1e-9 of |sigma|. The crest has none (zero),
 //    the ends (y = 0 and 6 m, turned) their horizontal tangents.
+// E. The demand-capacity evaluation (Evaluation/Evaluate) on the same
+//    block. E1: the uniform stress times sin(2 pi t / T), one period in 200
+//    steps, the tensile strength set so that the upstream arch stress's
+//    peak DCR is 2.5: its largest DCR 2.5 (1e-9) and its cumulative
+//    inelastic duration above L = 1, 1.5, 2 the closed form
+//    T (1/2 - asin(L / 2.5) / pi) to one step. E2: a stress growing
+//    linearly with height (the arch DCR 0 at the base, 2.4 at the crest):
+//    the upstream part's area from the points' weights against its closed
+//    form (the inclined face 6 m x 8 m x sqrt(1 + 0.25^2) and the end
+//    y = 6 m, whose turned normal points upstream too, 4 m x 8 m: 1e-12),
+//    and the summary's overstressed share at each level against the share
+//    of the weights of the points whose closed-form DCR (each with its own
+//    face's arch direction) exceeds it (1e-12).
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/geometry/mesh.h>
 #include <archdam/geometry/splitter.h>
-#include <archdam/output/stress_envelope.h>
 #include <archdam/joints/joint_faces.h>
+#include <archdam/output/stress_envelope.h>
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/distributed/shared_tria.h>
@@ -63,6 +76,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
 
 #include "archdam_tests.h"
 #include "case_text.h"
@@ -109,7 +123,7 @@ namespace
         std::vector<std::string> f;
         for (std::string field; std::getline(s, field, ',');)
           f.push_back(field);
-        AssertThrow(f.size() == 16, ExcMessage("bad row " + line));
+        AssertThrow(f.size() == 17, ExcMessage("bad row " + line));
         rows.push_back({f[0], Point<dim>(std::stod(f[1]), std::stod(f[2]), std::stod(f[3])),
                         std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7])});
       }
@@ -376,96 +390,157 @@ namespace
     check_below("crest points: max |z - 235 m| [m]", crest_z_error, 1e-9);
   }
 
+  /// Parts D and E's block: dam cells (Q2, 2 x 2 x 2 on [0, 4] x [0, 6] x
+  /// [0, 8] m) with a batter x -> x + 0.25 z, turned 30 degrees about the
+  /// vertical; the displacement u = f G x + g kappa z (x . h) h, h a
+  /// horizontal unit vector (exact in the finite element space), so
+  /// grad u = f G + g kappa (z h h^T + (x . h) h e_z^T).
+  struct TurnedBlock
+  {
+    static constexpr double batter = 0.25;
+    /// A turn about the vertical by @p angle.
+    static Tensor<1, dim>
+    turn(const Tensor<1, dim> &x, const double angle = M_PI / 6)
+    {
+      return Tensor<1, dim>({std::cos(angle) * x[0] - std::sin(angle) * x[1],
+                             std::sin(angle) * x[0] + std::cos(angle) * x[1], x[2]});
+    }
+
+    parallel::shared::Triangulation<dim> tria{MPI_COMM_WORLD};
+    physics::solid::MaterialParameters   materials;
+    std::unique_ptr<fe::FESpace>         space;
+    Tensor<2, dim>                       G;
+    const double                         kappa = 2e-6;
+    Tensor<1, dim>                       h{{0.6, 0.8, 0.}};
+
+    TurnedBlock()
+    {
+      GridGenerator::subdivided_hyper_rectangle(tria, {2, 2, 2}, Point<dim>(),
+                                                Point<dim>(4, 6, 8));
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          cell->set_material_id(ids::first_dam_block);
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              cell->face(f)->set_boundary_id(ids::free_surface_solid);
+        }
+      GridTools::transform(
+        [](const Point<dim> &p) {
+          return Point<dim>(turn(Tensor<1, dim>({p[0] + batter * p[2], p[1], p[2]})));
+        },
+        tria);
+      materials.concrete = {22e9, 0.167, 2446.5};
+      fe::FiniteElementParameters fep;
+      space = std::make_unique<fe::FESpace>(tria, fep);
+      space->setup({}, [](AffineConstraints<double> &) {});
+      G[0][0] = 1e-4, G[0][1] = 3e-5, G[0][2] = -2e-5, G[1][0] = 1e-5, G[1][1] = -5e-5;
+      G[1][2] = 4e-5, G[2][0] = 2e-5, G[2][1] = -1e-5, G[2][2] = -8e-5;
+    }
+
+    /// The unit outward normals of the inclined faces (x = x0 + 0.25 z), turned.
+    Tensor<1, dim>
+    normal(const bool upstream) const
+    {
+      const Tensor<1, dim> n({upstream ? -1. : 1., 0., upstream ? batter : -batter});
+      return turn(n / n.norm());
+    }
+    /// The unit outward normal of the face a surface point is on: the
+    /// inclined faces, the ends y = 0 and y = 6, or the crest, turned.
+    Tensor<1, dim>
+    normal_at(const Point<dim> &where) const
+    {
+      const Tensor<1, dim> q = turn(Tensor<1, dim>(where), -M_PI / 6);
+      if (const int on = face_of(where); on > 0)
+        return normal(on == 1);
+      if (std::abs(q[1]) < 1e-9 || std::abs(q[1] - 6) < 1e-9)
+        return turn(Tensor<1, dim>({0., q[1] < 1e-9 ? -1. : 1., 0.}));
+      return Tensor<1, dim>({0., 0., 1.});
+    }
+    /// Which inclined face a point is on (1 upstream, 2 downstream, 0 none).
+    int
+    face_of(const Point<dim> &where) const
+    {
+      const Tensor<1, dim> q  = turn(Tensor<1, dim>(where), -M_PI / 6);
+      const double         x0 = q[0] - batter * q[2];
+      return std::abs(x0) < 1e-9 ? 1 : std::abs(x0 - 4) < 1e-9 ? 2 : 0;
+    }
+    /// The stress of the state (f, g) at @p x.
+    SymmetricTensor<2, dim>
+    stress(const double f, const double g, const Point<dim> &x) const
+    {
+      const Tensor<1, dim> ez({0., 0., 1.});
+      return materials.concrete.stress(symmetrize(
+        f * G + g * kappa * (x[2] * outer_product(h, h) + (x * h) * outer_product(h, ez))));
+    }
+    /// The state u = f G x + g kappa z (x . h) h at time @p t.
+    void
+    set(time::NewmarkState &s, const double t, const double f, const double g) const
+    {
+      for (archdam::Vector *v : {&s.u, &s.v, &s.a})
+        if (v->size() == 0)
+          space->reinit(*v);
+      const auto &fe      = space->fe_collection[fe::FESpace::solid_index];
+      const auto  support = fe.get_unit_support_points();
+      const MappingQ1<dim>                 mapping;
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : space->dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (space->locally_owned.is_element(dofs[i]))
+                {
+                  const Point<dim> x = mapping.transform_unit_to_real_cell(cell, support[i]);
+                  s.u(dofs[i]) = (f * (G * x) + g * kappa * x[2] * (x * h) * h)
+                    [fe.system_to_component_index(i).first];
+                }
+          }
+      s.u.compress(VectorOperation::insert);
+      s.time = t;
+    }
+  };
+
+  /// a = e_z x n / |e_z x n|, c = n x a.
+  std::pair<Tensor<1, dim>, Tensor<1, dim>>
+  arch_and_cantilever_of(const Tensor<1, dim> &n)
+  {
+    Tensor<1, dim> a = cross_product_3d(Tensor<1, dim>({0., 0., 1.}), n);
+    a /= a.norm();
+    return {a, cross_product_3d(n, a)};
+  }
+
   void
   arch_and_cantilever()
   {
     log() << "D. arch and cantilever stresses on a battered block turned 30 degrees" << std::endl;
-    const double batter = 0.25;
-    // A turn about the vertical by @p angle.
-    const auto turn = [](const Tensor<1, dim> &x, const double angle = M_PI / 6) {
-      return Tensor<1, dim>({std::cos(angle) * x[0] - std::sin(angle) * x[1],
-                             std::sin(angle) * x[0] + std::cos(angle) * x[1], x[2]});
-    };
-    parallel::shared::Triangulation<dim> tria(MPI_COMM_WORLD);
-    GridGenerator::subdivided_hyper_rectangle(tria, {2, 2, 2}, Point<dim>(), Point<dim>(4, 6, 8));
-    for (const auto &cell : tria.active_cell_iterators())
-      {
-        cell->set_material_id(ids::first_dam_block);
-        for (const auto f : cell->face_indices())
-          if (cell->face(f)->at_boundary())
-            cell->face(f)->set_boundary_id(ids::free_surface_solid);
-      }
-    GridTools::transform(
-      [&](const Point<dim> &p) {
-        return Point<dim>(turn(Tensor<1, dim>({p[0] + batter * p[2], p[1], p[2]})));
-      },
-      tria);
+    const TurnedBlock      block;
+    output::StressEnvelope envelope(*block.space, block.materials, ".");
+    time::NewmarkState     s;
+    block.set(s, 0., 0., 0.);
+    envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
+    block.set(s, 1., 1., 0.);
+    envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
 
-    physics::solid::MaterialParameters materials;
-    materials.concrete = {22e9, 0.167, 2446.5};
-    fe::FiniteElementParameters fep;
-    fe::FESpace                 space(tria, fep);
-    space.setup({}, [](AffineConstraints<double> &) {});
-    output::StressEnvelope envelope(space, materials, ".");
-
-    // u = G x at every node (Q2 on an affine map: exact).
-    Tensor<2, dim> G;
-    G[0][0] = 1e-4, G[0][1] = 3e-5, G[0][2] = -2e-5, G[1][0] = 1e-5, G[1][1] = -5e-5;
-    G[1][2] = 4e-5, G[2][0] = 2e-5, G[2][1] = -1e-5, G[2][2] = -8e-5;
-    const SymmetricTensor<2, dim> sigma = materials.concrete.stress(symmetrize(G));
-    time::NewmarkState            s;
-    for (archdam::Vector *v : {&s.u, &s.v, &s.a})
-      space.reinit(*v);
-    envelope.record(output::StepRecord{s});
-    const auto &fe      = space.fe_collection[fe::FESpace::solid_index];
-    const auto  support = fe.get_unit_support_points();
-    const MappingQ1<dim>                 mapping;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : space.dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (space.locally_owned.is_element(dofs[i]))
-              s.u(dofs[i]) = (G * mapping.transform_unit_to_real_cell(cell, support[i]))
-                [fe.system_to_component_index(i).first];
-        }
-    s.u.compress(VectorOperation::insert);
-    s.time = 1.;
-    envelope.record(output::StepRecord{s});
-
-    // The faces' outward normals: x = x0 + batter z (up- and downstream),
-    // y = 0 and 6 (ends), turned.
-    const auto unit   = [&](const Tensor<1, dim> &n) { return turn(n / n.norm()); };
-    const auto stress = [&](const Tensor<1, dim> &t) { return t * (sigma * t); };
-    const Tensor<1, dim> upstream   = unit(Tensor<1, dim>({-1., 0., batter})),
-                         downstream = unit(Tensor<1, dim>({1., 0., -batter}));
-    double       error = 0.;
-    unsigned int n_up = 0, n_down = 0, n_crest = 0;
+    const SymmetricTensor<2, dim> sigma = block.stress(1., 0., Point<dim>());
+    double                        error = 0.;
+    unsigned int                  n_up = 0, n_down = 0, n_crest = 0;
     for (const auto &e : envelope.gather())
       {
-        // Back to the block's own frame: which face the point is on.
-        const Tensor<1, dim> q  = turn(Tensor<1, dim>(e.where), -M_PI / 6);
-        const double x0 = q[0] - batter * q[2];
-        Tensor<1, dim> n;
-        if (e.part == output::StressEnvelope::Part::upstream && std::abs(x0) < 1e-9)
-          n = upstream, ++n_up;
-        else if (e.part == output::StressEnvelope::Part::downstream && std::abs(x0 - 4) < 1e-9)
-          n = downstream, ++n_down;
-        else if (e.part == output::StressEnvelope::Part::crest && std::abs(q[2] - 8) < 1e-9)
+        const int on = block.face_of(e.where);
+        if (e.part == output::StressEnvelope::Part::crest)
           {
             ++n_crest;
             error = std::max({error, std::abs(e.arch.max), std::abs(e.arch.min),
                               std::abs(e.cantilever.max), std::abs(e.cantilever.min)});
             continue;
           }
-        else
+        if (!((on == 1 && e.part == output::StressEnvelope::Part::upstream) ||
+              (on == 2 && e.part == output::StressEnvelope::Part::downstream)))
           continue;
-        Tensor<1, dim> a = cross_product_3d(Tensor<1, dim>({0., 0., 1.}), n);
-        a /= a.norm();
-        const Tensor<1, dim> c = cross_product_3d(n, a);
+        (on == 1 ? n_up : n_down) += 1;
+        const auto [a, c] = arch_and_cantilever_of(block.normal(on == 1));
         // Over the two states (0 and sigma) the extremes are 0 and the value.
-        const double sa = stress(a), sc = stress(c);
+        const double sa = a * (sigma * a), sc = c * (sigma * c);
         error = std::max({error, std::abs(e.arch.max - std::max(sa, 0.)),
                           std::abs(e.arch.min - std::min(sa, 0.)),
                           std::abs(e.cantilever.max - std::max(sc, 0.)),
@@ -477,6 +552,105 @@ namespace
     check_below("  max |envelope - closed form| / |sigma| (arch and cantilever, crest zero)",
                 error / sigma.norm(), 1e-9);
   }
+
+  void
+  demand_capacity()
+  {
+    log() << "E. demand-capacity ratios on the same block" << std::endl;
+    TurnedBlock block;
+    const auto [a, c] = arch_and_cantilever_of(block.normal(true));
+    block.h           = a; // E2's stress grows with z along the upstream arch
+    // E1: sigma(t) = sin(2 pi t / T) C sym(G) over one period of 200 steps;
+    // the tensile strength makes the upstream arch stress's peak DCR 2.5,
+    // so its DCR exceeds L for T (1/2 - asin(L / 2.5) / pi).
+    const double sa0 = a * (block.stress(1., 0., Point<dim>()) * a);
+    output::EvaluationParameters ep;
+    ep.evaluate         = true;
+    ep.tensile_strength = std::abs(sa0) / 2.5;
+    const double sign   = sa0 > 0 ? 1. : -1.; // tension first
+    {
+      output::StressEnvelope envelope(*block.space, block.materials, ".", ep);
+      time::NewmarkState     s;
+      const double           T = 0.4, dt = T / 200;
+      for (unsigned int k = 0; k <= 200; ++k)
+        {
+          block.set(s, k * dt, sign * std::sin(2 * M_PI * k * dt / T), 0.);
+          envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
+        }
+      double dcr_error = 0., cid_error = 0.;
+      for (const auto &e : envelope.gather())
+        if (e.part == output::StressEnvelope::Part::upstream && block.face_of(e.where) == 1)
+          {
+            dcr_error = std::max(dcr_error, std::abs(e.arch_demand.largest_dcr - 2.5));
+            for (unsigned int i = 0; i < output::n_dcr_levels; ++i)
+              cid_error = std::max(cid_error,
+                                   std::abs(e.arch_demand.duration[i] -
+                                            T * (0.5 - std::asin(ep.levels[i] / 2.5) / M_PI)) /
+                                     dt);
+          }
+      check_below("  E1, a sine of peak DCR 2.5: |largest arch DCR - 2.5|", dcr_error, 1e-9);
+      check_below("  E1: |CID - T (1/2 - asin(L / 2.5) / pi)| in steps, L = 1, 1.5, 2", cid_error,
+                  1.);
+    }
+    // E2: an arch stress growing with z (the kappa term alone): the share
+    // of the upstream face whose arch DCR exceeds each level, against the
+    // points' own weights, and their sum against the face's area.
+    {
+      const double top = a * (block.stress(0., 1., Point<dim>(0., 0., 8.)) * a);
+      ep.tensile_strength = std::abs(top) / 2.4; // DCR from 0 at the base to 2.4 at the crest
+      const double g      = top > 0 ? 1. : -1.;
+      output::StressEnvelope envelope(*block.space, block.materials, ".", ep);
+      time::NewmarkState     s;
+      block.set(s, 0., 0., 0.);
+      envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
+      block.set(s, 1., 0., g);
+      envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
+      // The upstream part: the inclined face and the end y = 6 m (its
+      // turned normal points upstream too), each point with its own arch.
+      const auto   all = envelope.gather();
+      double       inclined = 0., area = 0.;
+      std::array<double, output::n_dcr_levels> over{};
+      for (const auto &e : all)
+        if (e.part == output::StressEnvelope::Part::upstream)
+          {
+            area += e.weight;
+            if (block.face_of(e.where) == 1)
+              inclined += e.weight;
+            const auto [ae, ce] = arch_and_cantilever_of(block.normal_at(e.where));
+            const double dcr = ae * (block.stress(0., g, e.where) * ae) / ep.tensile_strength;
+            for (unsigned int i = 0; i < output::n_dcr_levels; ++i)
+              if (dcr > ep.levels[i])
+                over[i] += e.weight;
+          }
+      check_relative("  E2: the inclined upstream face's area from the points' weights [m^2]",
+                     inclined, 6. * 8. * std::sqrt(1 + TurnedBlock::batter * TurnedBlock::batter),
+                     1e-12);
+      check_relative("  E2: the end face's (a parallelogram 4 m x 8 m) [m^2]", area - inclined,
+                     32., 1e-12);
+      output::Summary summary;
+      const ConditionalOStream quiet(std::cout, false);
+      envelope.finish(summary, quiet);
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        summary.write("demand_summary.json");
+      MPI_Barrier(MPI_COMM_WORLD);
+      boost::property_tree::ptree json;
+      boost::property_tree::read_json("demand_summary.json", json);
+      double share_error = 0.;
+      for (unsigned int i = 0; i < output::n_dcr_levels; ++i)
+        {
+          std::ostringstream key;
+          key << "stress envelope|upstream|arch DCR|above " << ep.levels[i]
+              << "|overstressed share of the area";
+          share_error = std::max(share_error,
+                                 std::abs(json.get<double>(boost::property_tree::ptree::path_type(key.str(), '|')) -
+                                          over[i] / area));
+        }
+      check_below("  E2: |overstressed share - the weights' share above each level|",
+                  share_error, 1e-12);
+      log() << "  E2: shares above 1, 1.5, 2: " << std::setprecision(3) << over[0] / area << ", "
+            << over[1] / area << ", " << over[2] / area << std::endl;
+    }
+  }
 } // namespace
 
 int
@@ -487,5 +661,6 @@ main(int argc, char **argv)
   shaken_block();
   arch_dam_with_water();
   arch_and_cantilever();
+  demand_capacity();
   return 0;
 }

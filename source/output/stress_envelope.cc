@@ -12,6 +12,7 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
+#include <sstream>
 #include <tuple>
 
 namespace archdam::output
@@ -42,9 +43,10 @@ namespace archdam::output
       return id == ids::free_surface_solid || id == ids::solid_interface;
     }
 
-    /// Part, x, y, z, max s1, its time, min s3, its time, and the arch's and
-    /// the cantilever's extremes: gathered as doubles.
-    constexpr unsigned int values_per_entry = 16;
+    /// Part, x, y, z, max s1, its time, min s3, its time, the arch's and
+    /// the cantilever's extremes, the weight, and the arch's and the
+    /// cantilever's largest DCR and durations: gathered as doubles.
+    constexpr unsigned int values_per_entry = 17 + 2 * (1 + n_dcr_levels);
   } // namespace
 
   void
@@ -92,9 +94,11 @@ namespace archdam::output
 
   StressEnvelope::StressEnvelope(const fe::FESpace                        &space,
                                  const physics::solid::MaterialParameters &materials,
-                                 const std::string                        &directory)
+                                 const std::string                        &directory,
+                                 const EvaluationParameters               &evaluation)
     : space(space)
     , directory(directory)
+    , evaluation(evaluation)
   {
     const auto &fe = space.fe_collection[fe::FESpace::solid_index];
     const auto &q  = space.face_q_collection[fe::FESpace::solid_index];
@@ -115,7 +119,7 @@ namespace archdam::output
             unit_gradients[f][k].push_back(fe.shape_grad(i, points.point(k)));
       }
     // The normals at the face rule's points, in the order of at_face[f]'s.
-    FEFaceValues<dim> normals(fe, q, update_normal_vectors);
+    FEFaceValues<dim> normals(fe, q, update_normal_vectors | update_JxW_values);
 
 
     for (const auto &cell : space.dof_handler.active_cell_iterators())
@@ -138,6 +142,7 @@ namespace archdam::output
               for (const unsigned int k : at_face[f]->quadrature_point_indices())
                 {
                   entries.push_back({part, at_face[f]->quadrature_point(k)});
+                  entries.back().weight = normals.JxW(k);
                   inverse_jacobians.push_back(Tensor<2, dim>(at_face[f]->inverse_jacobian(k)));
                   directions.push_back(face_directions(normals.normal_vector(k)));
                 }
@@ -167,8 +172,15 @@ namespace archdam::output
               symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k]));
             const auto [s1, s3] = physics::solid::principal_stresses(sigma);
             const auto &[arch, cantilever] = directions[face.first_entry + k];
-            e.arch.take(arch * (sigma * arch), t, !started);
-            e.cantilever.take(cantilever * (sigma * cantilever), t, !started);
+            const double sa = arch * (sigma * arch), sc = cantilever * (sigma * cantilever);
+            e.arch.take(sa, t, !started);
+            e.cantilever.take(sc, t, !started);
+            if (evaluation.evaluate)
+              {
+                const double dt = started ? t - t_prev : 0.;
+                e.arch_demand.add(sa / evaluation.tensile_strength, dt, evaluation.levels);
+                e.cantilever_demand.add(sc / evaluation.tensile_strength, dt, evaluation.levels);
+              }
             if (!started || s1 > e.max_s1)
               {
                 e.max_s1      = s1;
@@ -182,6 +194,7 @@ namespace archdam::output
           }
       }
     started = true;
+    t_prev  = t;
   }
 
   std::vector<StressEnvelope::Entry>
@@ -190,11 +203,18 @@ namespace archdam::output
     std::vector<double> local;
     local.reserve(values_per_entry * entries.size());
     for (const Entry &e : entries)
-      local.insert(local.end(), {static_cast<double>(e.part), e.where[0], e.where[1],
-                                 e.where[2], e.max_s1, e.time_max_s1, e.min_s3,
-                                 e.time_min_s3, e.arch.max, e.arch.time_max, e.arch.min,
-                                 e.arch.time_min, e.cantilever.max, e.cantilever.time_max,
-                                 e.cantilever.min, e.cantilever.time_min});
+      {
+        local.insert(local.end(), {static_cast<double>(e.part), e.where[0], e.where[1],
+                                   e.where[2], e.max_s1, e.time_max_s1, e.min_s3,
+                                   e.time_min_s3, e.arch.max, e.arch.time_max, e.arch.min,
+                                   e.arch.time_min, e.cantilever.max, e.cantilever.time_max,
+                                   e.cantilever.min, e.cantilever.time_min, e.weight});
+        for (const Exceedance *x : {&e.arch_demand, &e.cantilever_demand})
+          {
+            local.push_back(x->largest_dcr);
+            local.insert(local.end(), x->duration.begin(), x->duration.end());
+          }
+      }
     std::vector<Entry> all;
     for (const auto &from_rank : Utilities::MPI::all_gather(space.comm, local))
       for (std::size_t i = 0; i < from_rank.size(); i += values_per_entry)
@@ -202,7 +222,14 @@ namespace archdam::output
           const double *v = &from_rank[i];
           all.push_back({static_cast<Part>(static_cast<int>(v[0])), Point<dim>(v[1], v[2], v[3]),
                          v[4], v[5], v[6], v[7], {v[8], v[9], v[10], v[11]},
-                         {v[12], v[13], v[14], v[15]}});
+                         {v[12], v[13], v[14], v[15]}, v[16]});
+          v += 17;
+          for (Exceedance *x : {&all.back().arch_demand, &all.back().cantilever_demand})
+            {
+              x->largest_dcr = *v++;
+              std::copy(v, v + n_dcr_levels, x->duration.begin());
+              v += n_dcr_levels;
+            }
         }
     std::sort(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
       return std::make_tuple(a.part, a.where[2], a.where[1], a.where[0]) <
@@ -220,8 +247,15 @@ namespace archdam::output
         out << "face,x [m],y [m],z [m],max s1 [Pa],time of max s1 [s],min s3 [Pa],"
                "time of min s3 [s],max arch [Pa],time of max arch [s],min arch [Pa],"
                "time of min arch [s],max cantilever [Pa],time of max cantilever [s],"
-               "min cantilever [Pa],time of min cantilever [s]\n"
-            << std::setprecision(10);
+               "min cantilever [Pa],time of min cantilever [s]";
+        if (evaluation.evaluate)
+          for (const std::string what : {"arch", "cantilever"})
+            {
+              out << ",largest " << what << " DCR";
+              for (const double level : evaluation.levels)
+                out << "," << what << " CID above DCR " << level << " [s]";
+            }
+        out << ",area [m^2]\n" << std::setprecision(10);
         for (const Entry &e : all)
           {
             out << name(e.part) << ',' << e.where[0] << ',' << e.where[1] << ',' << e.where[2]
@@ -229,7 +263,14 @@ namespace archdam::output
                 << e.time_min_s3;
             for (const Extremes *x : {&e.arch, &e.cantilever})
               out << ',' << x->max << ',' << x->time_max << ',' << x->min << ',' << x->time_min;
-            out << '\n';
+            if (evaluation.evaluate)
+              for (const Exceedance *x : {&e.arch_demand, &e.cantilever_demand})
+                {
+                  out << ',' << x->largest_dcr;
+                  for (const double d : x->duration)
+                    out << ',' << d;
+                }
+            out << ',' << e.weight << '\n';
           }
       });
     });
@@ -280,6 +321,8 @@ namespace archdam::output
             place(key + "smallest " + what + " stress [Pa]", ((*compression).*of).min,
                   ((*compression).*of).time_min, compression->where);
           }
+        if (evaluation.evaluate)
+          summarize_demand(all, part, key, summary);
       }
     const auto peak = std::max_element(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
       return a.max_s1 < b.max_s1;
@@ -293,16 +336,57 @@ namespace archdam::output
   }
 
   void
+  StressEnvelope::summarize_demand(const std::vector<Entry> &all, const Part part,
+                                   const std::string &key, Summary &summary) const
+  {
+    // Per stress: the largest DCR, the longest CID at each level, and the
+    // share of the part's area whose largest DCR exceeds each level.
+    double area = 0.;
+    for (const Entry &e : all)
+      if (e.part == part)
+        area += e.weight;
+    for (const auto &[what, of] :
+         {std::pair<std::string, Exceedance Entry::*>{"arch", &Entry::arch_demand},
+          {"cantilever", &Entry::cantilever_demand}})
+      {
+        double largest = 0.;
+        std::array<double, n_dcr_levels> cid{}, overstressed{};
+        for (const Entry &e : all)
+          if (e.part == part)
+            {
+              const Exceedance &x = e.*of;
+              largest             = std::max(largest, x.largest_dcr);
+              for (unsigned int i = 0; i < n_dcr_levels; ++i)
+                {
+                  cid[i] = std::max(cid[i], x.duration[i]);
+                  if (x.largest_dcr > evaluation.levels[i])
+                    overstressed[i] += e.weight;
+                }
+            }
+        const std::string k = key + what + " DCR/";
+        summary.set(k + "largest", largest);
+        for (unsigned int i = 0; i < n_dcr_levels; ++i)
+          {
+            std::ostringstream level;
+            level << evaluation.levels[i];
+            summary.set(k + "above " + level.str() + "/longest CID [s]", cid[i]);
+            summary.set(k + "above " + level.str() + "/overstressed share of the area",
+                        area > 0. ? overstressed[i] / area : 0.);
+          }
+      }
+  }
+
+  void
   StressEnvelope::save(std::ostream &out) const
   {
-    binary::write_all(out, entries, started);
+    binary::write_all(out, entries, started, t_prev);
   }
 
   void
   StressEnvelope::load(std::istream &in)
   {
     const auto n = entries.size();
-    binary::read_all(in, entries, started);
+    binary::read_all(in, entries, started, t_prev);
     if (entries.size() != n)
       throw InputError("Checkpoint: the saved stress envelope has " +
                        std::to_string(entries.size()) + " points on this process, the model " +

@@ -40,6 +40,7 @@ namespace archdam
     section("Monitors", [&] { monitors.add_parameters(prm); });
     section("Output", [&] { output.add_parameters(prm); });
     section("Checkpoints", [&] { checkpoints.add_parameters(prm); });
+    section("Evaluation", [&] { evaluation.add_parameters(prm); });
   }
 
   namespace
@@ -135,6 +136,7 @@ namespace archdam
             refuse("Hydrostatic pressure");
         }
       p.checkpoints.check();
+      p.evaluation.check();
     }
 
     /// Every value outside Output and Checkpoints, "path = value" a line,

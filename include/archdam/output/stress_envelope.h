@@ -1,6 +1,7 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/output/face_evaluation.h>
 #include <archdam/output/recorder.h>
 #include <archdam/physics/solid/materials.h>
 
@@ -84,6 +85,11 @@ namespace archdam::output
       /// along the tangent normal to it (cantilever), upstream and
       /// downstream faces only (zero elsewhere; face_directions()).
       Extremes arch, cantilever;
+      /// The point's share of its face's area [m^2] (its quadrature weight).
+      double weight = 0.;
+      /// With `Evaluation/Evaluate`: the arch's and the cantilever's DCR and
+      /// cumulative inelastic durations (face_evaluation.h).
+      Exceedance arch_demand, cantilever_demand;
     };
 
     /// The arch direction of a face with unit outward normal @p n, its
@@ -94,8 +100,10 @@ namespace archdam::output
     static std::pair<dealii::Tensor<1, dim>, dealii::Tensor<1, dim>>
     face_directions(const dealii::Tensor<1, dim> &n);
 
+    /// With @p evaluation (its Evaluate set), also the demand-capacity
+    /// evaluation of the arch and cantilever stresses.
     StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials,
-                   const std::string &directory);
+                   const std::string &directory, const EvaluationParameters &evaluation = {});
 
     std::string
     name() const override
@@ -134,8 +142,16 @@ namespace archdam::output
       unsigned int                                 first_entry;
     };
 
+    /// The demand-capacity evaluation of @p part into @p summary under @p key.
+    void
+    summarize_demand(const std::vector<Entry> &all, Part part, const std::string &key,
+                     Summary &summary) const;
+
     const fe::FESpace        &space;
     std::string               directory;
+    EvaluationParameters      evaluation;
+    /// The time of the last state taken.
+    double                    t_prev = 0.;
     std::vector<Face>         faces;
     std::vector<Entry>        entries; // this rank's points
     /// d(unit coordinates)/dx at each entry's point.

@@ -7,6 +7,7 @@
 #include <archdam/loads/ground_motion.h>
 #include <archdam/loads/static_loads.h>
 #include <archdam/output/checkpoint.h>
+#include <archdam/output/face_evaluation.h>
 #include <archdam/output/field_writer.h>
 #include <archdam/output/monitors.h>
 #include <archdam/physics/foundation/foundation.h>
@@ -45,6 +46,7 @@ namespace archdam
     output::MonitorParameters                monitors;
     output::OutputParameters                 output;
     output::CheckpointParameters             checkpoints;
+    output::EvaluationParameters             evaluation;
 
     /// A hash of every parameter value outside the sections Output and
     /// Checkpoints: a checkpoint continues only the case that wrote it.
