@@ -160,11 +160,6 @@ namespace archdam::physics::foundation
     {
       return !damping.none();
     }
-    const FreeFieldDamping &
-    rock_damping() const
-    {
-      return damping;
-    }
 
   private:
     /// q = displacement, velocity or acceleration (@p of) of component @p d
