@@ -52,7 +52,11 @@
 //    steps, the tensile strength set so that the upstream arch stress's
 //    peak DCR is 2.5: its largest DCR 2.5 (1e-9) and its cumulative
 //    inelastic duration above L = 1, 1.5, 2 the closed form
-//    T (1/2 - asin(L / 2.5) / pi) to one step. E2: a stress growing
+//    T (1/2 - asin(L / 2.5) / pi) to one step, and with a compressive
+//    strength of 10 f_t the summary's largest arch compression on the
+//    upstream part over f_c equal to the largest |a^T sigma a| of its points
+//    (the sine's trough; each point with its own face's arch) (1e-9).
+//    E2: a stress growing
 //    linearly with height (the arch DCR 0 at the base, 2.4 at the crest):
 //    the upstream part's area from the points' weights against its closed
 //    form (the inclined face 6 m x 8 m x sqrt(1 + 0.25^2) and the end
@@ -566,7 +570,8 @@ namespace
     const double sa0 = a * (block.stress(1., 0., Point<dim>()) * a);
     output::EvaluationParameters ep;
     ep.evaluate         = true;
-    ep.tensile_strength = std::abs(sa0) / 2.5;
+    ep.tensile_strength     = std::abs(sa0) / 2.5;
+    ep.compressive_strength = 10 * ep.tensile_strength;
     const double sign   = sa0 > 0 ? 1. : -1.; // tension first
     {
       output::StressEnvelope envelope(*block.space, block.materials, ".", ep);
@@ -591,6 +596,30 @@ namespace
       check_below("  E1, a sine of peak DCR 2.5: |largest arch DCR - 2.5|", dcr_error, 1e-9);
       check_below("  E1: |CID - T (1/2 - asin(L / 2.5) / pi)| in steps, L = 1, 1.5, 2", cid_error,
                   1.);
+      // The sine's trough: the largest |a^T sigma0 a| over the upstream part
+      // (each point with its own face's arch) against f_c.
+      double compression = 0.;
+      for (const auto &e : envelope.gather())
+        if (e.part == output::StressEnvelope::Part::upstream)
+          {
+            const auto [ae, ce] = arch_and_cantilever_of(block.normal_at(e.where));
+            compression = std::max(compression,
+                                   std::abs(ae * (block.stress(1., 0., e.where) * ae)));
+          }
+      output::Summary          summary;
+      const ConditionalOStream quiet(std::cout, false);
+      envelope.finish(summary, quiet);
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        summary.write("compression_summary.json");
+      MPI_Barrier(MPI_COMM_WORLD);
+      boost::property_tree::ptree json;
+      boost::property_tree::read_json("compression_summary.json", json);
+      check_below("  E1: |upstream arch compression / compressive strength - closed form|",
+                  std::abs(json.get<double>(boost::property_tree::ptree::path_type(
+                             "stress envelope|upstream|arch compression to the compressive strength",
+                             '|')) -
+                           compression / ep.compressive_strength),
+                  1e-9);
     }
     // E2: an arch stress growing with z (the kappa term alone): the share
     // of the upstream face whose arch DCR exceeds each level, against the

@@ -23,6 +23,10 @@ namespace archdam::output
                       "dynamic one for the dynamic stage); must be positive with Evaluate = "
                       "true.",
                       Patterns::Double(0.));
+    prm.add_parameter("Compressive strength", compressive_strength,
+                      "The concrete's compressive strength [Pa]: the largest arch and cantilever "
+                      "compression is reported as a ratio to it; 0 = no compression check.",
+                      Patterns::Double(0.));
     prm.add_parameter("DCR levels", levels,
                       "Three increasing DCR levels at which the cumulative inelastic duration "
                       "is kept (EM 1110-2-6053 uses 1, 1.5 and 2 for a linear analysis).");

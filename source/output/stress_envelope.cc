@@ -345,9 +345,15 @@ namespace archdam::output
     for (const Entry &e : all)
       if (e.part == part)
         area += e.weight;
-    for (const auto &[what, of] :
-         {std::pair<std::string, Exceedance Entry::*>{"arch", &Entry::arch_demand},
-          {"cantilever", &Entry::cantilever_demand}})
+    struct Stress
+    {
+      std::string       what;
+      Exceedance Entry::*of;
+      Extremes Entry::  *stress;
+    };
+    for (const auto &[what, of, stress] :
+         {Stress{"arch", &Entry::arch_demand, &Entry::arch},
+          Stress{"cantilever", &Entry::cantilever_demand, &Entry::cantilever}})
       {
         double largest = 0.;
         std::array<double, n_dcr_levels> cid{}, overstressed{};
@@ -365,6 +371,16 @@ namespace archdam::output
             }
         const std::string k = key + what + " DCR/";
         summary.set(k + "largest", largest);
+        if (evaluation.compressive_strength > 0.)
+          {
+            // The largest compression of this stress on the part.
+            double compression = 0.;
+            for (const Entry &e : all)
+              if (e.part == part)
+                compression = std::max(compression, -(e.*stress).min);
+            summary.set(key + what + " compression to the compressive strength",
+                        compression / evaluation.compressive_strength);
+          }
         for (unsigned int i = 0; i < n_dcr_levels; ++i)
           {
             std::ostringstream level;

@@ -16,12 +16,15 @@ namespace archdam::output
    * (doc/theory/results.md §3): the demand-capacity ratio DCR = stress /
    * tensile strength of the arch and the cantilever stress (tension
    * positive), and the cumulative inelastic duration CID, the time a
-   * point's DCR stays above each of three levels.
+   * point's DCR stays above each of three levels; and the largest
+   * compression against the compressive strength.
    */
   struct EvaluationParameters
   {
-    bool                              evaluate         = false;
-    double                            tensile_strength = 0.;
+    bool                              evaluate             = false;
+    double                            tensile_strength     = 0.;
+    /// 0: no compression check.
+    double                            compressive_strength = 0.;
     std::array<double, n_dcr_levels> levels{{1., 1.5, 2.}};
 
     void
