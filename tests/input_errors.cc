@@ -106,6 +106,14 @@ main(int argc, char **argv)
               {"good.prm", "--set", "Evaluation/Evaluate=true", "--set",
                "Evaluation/Tensile strength=3e6", "--set", "Evaluation/DCR levels=0, 1.5, 2"});
   run_set("an end time shorter than one time step", "Time integration/End time=0.004");
+  run_set("a temperature table row without its ':'", "Static loads/Temperature change=0 -5, 3");
+  run_set("temperature table elevations that do not increase",
+          "Static loads/Temperature change=10: -5, 3; 5: -4, 2");
+  run_set("a temperature change of 500 degrees", "Static loads/Temperature change=0: -500, 3");
+  run_set("a temperature table that does not reach the dam's crest",
+          "Static loads/Temperature change=0: -5, 3; 1: -5, 3");
+  run_set("a thermal expansion coefficient of 1 per degree",
+          "Materials/Concrete/Thermal expansion coefficient=1");
   run_archdam("damping frequencies in the wrong order",
       {"good.prm", "--set", "Damping/Mode=damping ratio", "--set",
        "Damping/First frequency=20", "--set", "Damping/Second frequency=10"});

@@ -101,6 +101,9 @@ namespace case_text = archdam::testing::case_text;
 
 namespace
 {
+  /// The blocks of parts D and E carry no temperature change.
+  const physics::solid::TemperatureField no_temperature;
+
   struct Row
   {
     std::string part;
@@ -518,7 +521,7 @@ namespace
   {
     log() << "D. arch and cantilever stresses on a battered block turned 30 degrees" << std::endl;
     const TurnedBlock      block;
-    output::StressEnvelope envelope(*block.space, block.materials, ".");
+    output::StressEnvelope envelope(*block.space, block.materials, no_temperature, ".");
     time::NewmarkState     s;
     block.set(s, 0., 0., 0.);
     envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
@@ -574,7 +577,7 @@ namespace
     ep.compressive_strength = 10 * ep.tensile_strength;
     const double sign   = sa0 > 0 ? 1. : -1.; // tension first
     {
-      output::StressEnvelope envelope(*block.space, block.materials, ".", ep);
+      output::StressEnvelope envelope(*block.space, block.materials, no_temperature, ".", ep);
       time::NewmarkState     s;
       const double           T = 0.4, dt = T / 200;
       for (unsigned int k = 0; k <= 200; ++k)
@@ -628,7 +631,7 @@ namespace
       const double top = a * (block.stress(0., 1., Point<dim>(0., 0., 8.)) * a);
       ep.tensile_strength = std::abs(top) / 2.4; // DCR from 0 at the base to 2.4 at the crest
       const double g      = top > 0 ? 1. : -1.;
-      output::StressEnvelope envelope(*block.space, block.materials, ".", ep);
+      output::StressEnvelope envelope(*block.space, block.materials, no_temperature, ".", ep);
       time::NewmarkState     s;
       block.set(s, 0., 0., 0.);
       envelope.record(output::StepRecord{s, nullptr, {}, nullptr});

@@ -126,9 +126,11 @@ namespace archdam::analysis
       recorders.push_back(std::make_unique<output::JointOutput>(
         p.joints, *model().joint_pairs(), directory, "dynamic", p.output.field_interval));
     recorders.push_back(
-      std::make_unique<output::StressEnvelope>(model().space(), p.materials, directory,
+      std::make_unique<output::StressEnvelope>(model().space(), p.materials,
+                                               model().temperature(), directory,
                                                p.evaluation));
-    recorders.push_back(std::make_unique<output::FieldWriter>(p.output, model().space(), p.materials));
+    recorders.push_back(std::make_unique<output::FieldWriter>(p.output, model().space(), p.materials,
+                                                                 model().temperature()));
   }
 
   output::StepRecord

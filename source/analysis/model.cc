@@ -251,6 +251,10 @@ namespace archdam::analysis
     if (p.static_loads.hydrostatic && water != reservoir::Model::none)
       reservoir::add_hydrostatic_load(*fe_space, p.reservoir.density, p.static_loads.g, level,
                                       static_forces);
+    // The temperature change since grouting (doc/theory/temperature.md §2).
+    temperature_change = physics::solid::TemperatureField(
+      loads::parse_temperature_table(p.static_loads.temperature_change), mesh);
+    physics::solid::add_thermal_load(*fe_space, p.materials, temperature_change, static_forces);
     // Influence loads M iota_d of the relative formulation (doc/theory/foundation.md §2).
     for (unsigned int d = 0; d < dim; ++d)
       physics::solid::assemble_inertia_load(*fe_space, p.materials, inertia,
@@ -273,7 +277,8 @@ namespace archdam::analysis
         if (n_dam > 0)
           report_free_field(*free_field, *motion, z_surface, z_base, screen, summary);
       }
-    monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials);
+    monitor = std::make_unique<output::Monitors>(p.monitors, *fe_space, p.materials,
+                                                 temperature_change);
   }
 
   physics::foundation::FreeFieldDamping

@@ -78,6 +78,7 @@ namespace archdam::analysis
   StaticResultants
   static_resultants(const fe::FESpace                        &space,
                     const physics::solid::MaterialParameters &materials,
+                    const physics::solid::TemperatureField   &temperature,
                     const Vector                             &u,
                     const Tensor<1, dim>                     &gravity,
                     const std::function<double(double)>      &pressure)
@@ -148,7 +149,8 @@ namespace archdam::analysis
               SymmetricTensor<2, dim> strain;
               for (unsigned int i = 0; i < n; ++i)
                 strain += u_cell[i] * cell_values[space.displacement].symmetric_gradient(i, k);
-              const auto           sigma = material.stress(strain);
+              const auto           sigma = material.stress(
+                strain, temperature.change(cell->material_id(), cell_values.quadrature_point(k)));
               const Tensor<1, dim> b     = material.density * gravity;
               const double         dV    = cell_values.JxW(k);
               result.weight += b * dV;
@@ -173,7 +175,10 @@ namespace archdam::analysis
                   const double         dA    = face_values.JxW(k);
                   if (rock)
                     result.support_stress +=
-                      material.stress(symmetrize(gradients[k])) * n_out * dA;
+                      material.stress(symmetrize(gradients[k]),
+                                      temperature.change(cell->material_id(),
+                                                         face_values.quadrature_point(k))) *
+                      n_out * dA;
                   else
                     {
                       const Point<dim>     x = face_values.quadrature_point(k);

@@ -79,7 +79,8 @@ namespace archdam::analysis
     Vector u;
     model().space().reinit_ghosted(u);
     u               = u_static;
-    const auto peak = physics::solid::peak_major_principal_stress(model().space(), p.materials, u);
+    const auto peak = physics::solid::peak_major_principal_stress(model().space(), p.materials,
+                                                                   model().temperature(), u);
     const std::string key = "static/major principal stress in the dam [Pa]/";
     summary.set(key + "largest", peak.value);
     for (unsigned int d = 0; d < dim; ++d)
@@ -125,7 +126,7 @@ namespace archdam::analysis
     Vector       u;
     model().space().reinit_ghosted(u);
     u            = u_static;
-    const auto r = static_resultants(model().space(), p.materials, u, gravity, [&](const double z) {
+    const auto r = static_resultants(model().space(), p.materials, model().temperature(), u, gravity, [&](const double z) {
       return hydrostatic && z < level ? rho_g * (level - z) : 0.;
     });
     if (screen.is_active())

@@ -81,10 +81,12 @@ namespace archdam::output
 
   FieldWriter::FieldWriter(const OutputParameters                   &p,
                            const fe::FESpace                        &space,
-                           const physics::solid::MaterialParameters &materials)
+                           const physics::solid::MaterialParameters &materials,
+                           const physics::solid::TemperatureField   &temperature)
     : p(p)
     , space(space)
     , materials(materials)
+    , temperature(temperature)
     , vtu(p.field_formats.find("vtu") != std::string::npos)
     , hdf5(p.field_formats.find("hdf5") != std::string::npos)
   {}
@@ -143,7 +145,7 @@ namespace archdam::output
     const unsigned int index = n_written++;
     if (vtu)
       {
-        const Stress stress(materials, Stress::Layout::tensor);
+        const Stress stress(materials, temperature, Stress::Layout::tensor);
         DataOut<dim> data_out;
         patches(data_out, stress);
         const std::string pvtu =
@@ -157,7 +159,7 @@ namespace archdam::output
       }
     if (hdf5)
       {
-        const Stress stress(materials, Stress::Layout::components);
+        const Stress stress(materials, temperature, Stress::Layout::components);
         DataOut<dim> data_out;
         patches(data_out, stress);
         // Points are not merged: the two faces of a joint, and the solid and

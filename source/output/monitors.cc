@@ -67,7 +67,8 @@ namespace archdam::output
 
   Monitors::Monitors(const MonitorParameters                  &p,
                      const fe::FESpace                        &space,
-                     const physics::solid::MaterialParameters &materials)
+                     const physics::solid::MaterialParameters &materials,
+                     const physics::solid::TemperatureField   &temperature)
     : space(space)
     , points(parse_monitor_points(p.points))
   {
@@ -132,7 +133,8 @@ namespace archdam::output
             w.value.push_back(fv[space.displacement].value(i, 0));
             w.gradient.push_back(fv[space.displacement].gradient(i, 0));
           }
-        w.material = materials.of(cell->material_id());
+        w.material           = materials.of(cell->material_id());
+        w.temperature_change = temperature.change(cell->material_id(), pt.location);
         weights.push_back(w);
       }
   }
@@ -189,7 +191,8 @@ namespace archdam::output
             for (unsigned int i = 0; i < u.size(); ++i)
               grad += u[i] * weights[k].gradient[i];
             const auto [s1, s3] =
-              physics::solid::principal_stresses(weights[k].material.stress(symmetrize(grad)));
+              physics::solid::principal_stresses(weights[k].material.stress(symmetrize(grad),
+                                                                          weights[k].temperature_change));
             row.push_back(s1);
             row.push_back(s3);
           }

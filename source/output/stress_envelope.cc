@@ -21,28 +21,6 @@ namespace archdam::output
 
   namespace
   {
-    /// The part of the dam surface a face with mean outward normal @p n
-    /// belongs to (the rule of the class documentation).
-    StressEnvelope::Part
-    part_of(const Tensor<1, dim> &n)
-    {
-      if (n[2] > std::abs(n[0]) && n[2] > std::abs(n[1]))
-        return StressEnvelope::Part::crest;
-      if (n[0] <= -0.1)
-        return StressEnvelope::Part::upstream;
-      if (n[0] >= 0.1)
-        return StressEnvelope::Part::downstream;
-      return StressEnvelope::Part::side;
-    }
-
-    /// The dam's surface: free (0) or wetted (7); joint faces, the
-    /// truncated base and the interface with the rock are not.
-    bool
-    on_dam_surface(const types::boundary_id id)
-    {
-      return id == ids::free_surface_solid || id == ids::solid_interface;
-    }
-
     /// Part, x, y, z, max s1, its time, min s3, its time, the arch's and
     /// the cantilever's extremes, the weight, and the arch's and the
     /// cantilever's largest DCR and durations: gathered as doubles.
@@ -67,7 +45,7 @@ namespace archdam::output
   std::pair<Tensor<1, dim>, Tensor<1, dim>>
   StressEnvelope::face_directions(const Tensor<1, dim> &n)
   {
-    if (part_of(n) == Part::crest)
+    if (geometry::surface_part(n) == Part::crest)
       return {};
     const Tensor<1, dim> arch = cross_product_3d(Point<dim>(0, 0, 1), n);
     const double         length = arch.norm();
@@ -76,24 +54,9 @@ namespace archdam::output
     return {arch / length, cross_product_3d(n, arch / length)};
   }
 
-  std::string
-  StressEnvelope::name(const Part part)
-  {
-    switch (part)
-      {
-        case Part::upstream:
-          return "upstream";
-        case Part::downstream:
-          return "downstream";
-        case Part::crest:
-          return "crest";
-        default:
-          return "side";
-      }
-  }
-
   StressEnvelope::StressEnvelope(const fe::FESpace                        &space,
                                  const physics::solid::MaterialParameters &materials,
+                                 const physics::solid::TemperatureField   &temperature,
                                  const std::string                        &directory,
                                  const EvaluationParameters               &evaluation)
     : space(space)
@@ -125,13 +88,13 @@ namespace archdam::output
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && ids::is_dam(cell->material_id()))
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() && on_dam_surface(cell->face(f)->boundary_id()))
+          if (cell->face(f)->at_boundary() && geometry::on_dam_surface(cell->face(f)->boundary_id()))
             {
               normals.reinit(cell, f);
               Tensor<1, dim> mean_normal;
               for (const unsigned int k : normals.quadrature_point_indices())
                 mean_normal += normals.normal_vector(k);
-              const Part part = part_of(mean_normal / mean_normal.norm());
+              const Part part = geometry::surface_part(mean_normal / mean_normal.norm());
 
               Face face{std::vector<types::global_dof_index>(fe.dofs_per_cell),
                         materials.of(cell->material_id()), f,
@@ -144,6 +107,8 @@ namespace archdam::output
                   entries.push_back({part, at_face[f]->quadrature_point(k)});
                   entries.back().weight = normals.JxW(k);
                   inverse_jacobians.push_back(Tensor<2, dim>(at_face[f]->inverse_jacobian(k)));
+                  temperature_changes.push_back(
+                    temperature.change(cell->material_id(), at_face[f]->quadrature_point(k)));
                   directions.push_back(face_directions(normals.normal_vector(k)));
                 }
             }
@@ -169,7 +134,8 @@ namespace archdam::output
             Entry &e = entries[face.first_entry + k];
             // Hooke's law and the principal stresses (doc/theory/solid.md §6).
             const SymmetricTensor<2, dim> sigma = face.material.stress(
-              symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k]));
+              symmetrize(unit_gradient * inverse_jacobians[face.first_entry + k]),
+              temperature_changes[face.first_entry + k]);
             const auto [s1, s3] = physics::solid::principal_stresses(sigma);
             const auto &[arch, cantilever] = directions[face.first_entry + k];
             const double sa = arch * (sigma * arch), sc = cantilever * (sigma * cantilever);
@@ -258,7 +224,7 @@ namespace archdam::output
         out << ",area [m^2]\n" << std::setprecision(10);
         for (const Entry &e : all)
           {
-            out << name(e.part) << ',' << e.where[0] << ',' << e.where[1] << ',' << e.where[2]
+            out << geometry::name(e.part) << ',' << e.where[0] << ',' << e.where[1] << ',' << e.where[2]
                 << ',' << e.max_s1 << ',' << e.time_max_s1 << ',' << e.min_s3 << ','
                 << e.time_min_s3;
             for (const Extremes *x : {&e.arch, &e.cantilever})
@@ -298,7 +264,7 @@ namespace archdam::output
             }
         if (n == 0)
           continue;
-        const std::string key = "stress envelope/" + name(part) + "/";
+        const std::string key = "stress envelope/" + geometry::name(part) + "/";
         summary.set(key + "points", n);
         place(key + "max major principal stress [Pa]", largest->max_s1, largest->time_max_s1,
               largest->where);

@@ -134,7 +134,12 @@ namespace archdam
             refuse("Gravity");
           if (p.static_loads.hydrostatic && p.reservoir.model != physics::reservoir::Model::none)
             refuse("Hydrostatic pressure");
+          if (!loads::parse_temperature_table(p.static_loads.temperature_change).empty())
+            throw InputError("Static loads/Temperature change is given, but Analysis/Stages has "
+                             "no static stage to apply it in: add static to Stages, or leave "
+                             "Temperature change empty.");
         }
+      loads::parse_temperature_table(p.static_loads.temperature_change);
       p.checkpoints.check();
       p.evaluation.check();
     }

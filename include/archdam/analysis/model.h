@@ -11,6 +11,7 @@
 #include <archdam/physics/foundation/reference_motion.h>
 #include <archdam/physics/reservoir/fluid_operators.h>
 #include <archdam/physics/solid/solid_operators.h>
+#include <archdam/physics/solid/thermal.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -108,7 +109,8 @@ namespace archdam::analysis
       stiffness_matrix.clear();
       damping_matrix.clear();
     }
-    /// F_static: self-weight and hydrostatic pressure as the case asks.
+    /// F_static: self-weight, hydrostatic pressure and the temperature
+    /// change's load as the case asks.
     const Vector &
     static_load() const
     {
@@ -164,6 +166,13 @@ namespace archdam::analysis
     {
       return massed_foundation.get();
     }
+    /// The dam's temperature change since grouting (empty without
+    /// `Static loads/Temperature change`): every stress is C (eps - alpha dT I).
+    const physics::solid::TemperatureField &
+    temperature() const
+    {
+      return temperature_change;
+    }
     const output::Monitors &
     monitors() const
     {
@@ -193,6 +202,7 @@ namespace archdam::analysis
     std::unique_ptr<fe::FESpace>                           fe_space;
     SparseMatrix                                           mass_matrix, stiffness_matrix,
       damping_matrix, dam_damping_matrix;
+    physics::solid::TemperatureField                       temperature_change;
     Vector                                                 static_forces, weight_forces;
     std::array<Vector, dim>                                influence;
     std::vector<physics::reservoir::InterfacePair>         interfaces;

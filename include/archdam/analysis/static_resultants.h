@@ -2,6 +2,7 @@
 
 #include <archdam/fe/fe_space.h>
 #include <archdam/physics/solid/materials.h>
+#include <archdam/physics/solid/thermal.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -58,11 +59,14 @@ namespace archdam::analysis
   /**
    * The resultants of the dam for the ghosted displacement @p u under the
    * body force @p gravity (m/s^2 on the dam's density) and the water pressure
-   * @p pressure(z) on the wetted dam faces (0 without water). Collective.
+   * @p pressure(z) on the wetted dam faces (0 without water), the stress
+   * C (eps - alpha dT I) with the dam's temperature change @p temperature
+   * (whose load is self-equilibrated: it adds no resultant). Collective.
    */
   StaticResultants
   static_resultants(const fe::FESpace                        &space,
                     const physics::solid::MaterialParameters &materials,
+                    const physics::solid::TemperatureField   &temperature,
                     const Vector                             &u,
                     const dealii::Tensor<1, dim>             &gravity,
                     const std::function<double(double)>      &pressure);

@@ -4,6 +4,7 @@
 #include <archdam/output/earlier_results.h>
 #include <archdam/output/recorder.h>
 #include <archdam/physics/solid/materials.h>
+#include <archdam/physics/solid/thermal.h>
 #include <archdam/time/newmark.h>
 
 #include <deal.II/base/data_out_base.h>
@@ -56,7 +57,8 @@ namespace archdam::output
   {
   public:
     FieldWriter(const OutputParameters &p, const fe::FESpace &space,
-                const physics::solid::MaterialParameters &materials);
+                const physics::solid::MaterialParameters &materials,
+                const physics::solid::TemperatureField   &temperature);
 
     /// Write the fields of @p s (its time labels the output), with
     /// @p acceleration in place of s.a if given (StepRecord::acceleration).
@@ -88,6 +90,7 @@ namespace archdam::output
     const OutputParameters                   &p;
     const fe::FESpace                        &space;
     const physics::solid::MaterialParameters &materials;
+    const physics::solid::TemperatureField   &temperature;
     bool                                      vtu, hdf5;
     std::vector<std::pair<double, std::string>> pvd_records;
     std::vector<dealii::XDMFEntry>            xdmf_entries;

@@ -2,6 +2,7 @@
 
 #include <archdam/fe/fe_space.h>
 #include <archdam/physics/solid/materials.h>
+#include <archdam/physics/solid/thermal.h>
 #include <archdam/time/newmark.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -56,8 +57,11 @@ namespace archdam::output
   class Monitors
   {
   public:
+    /// The stress is C (eps - alpha dT I) with the dam's temperature change
+    /// @p temperature (physics/solid/thermal.h).
     Monitors(const MonitorParameters &p, const fe::FESpace &space,
-             const physics::solid::MaterialParameters &materials);
+             const physics::solid::MaterialParameters &materials,
+             const physics::solid::TemperatureField   &temperature);
 
     /// Column headers with units, in the order of evaluate().
     const std::vector<std::string> &
@@ -95,6 +99,7 @@ namespace archdam::output
       std::vector<dealii::Tensor<1, dim>>          value;    // per dof
       std::vector<dealii::Tensor<2, dim>>          gradient; // per dof
       physics::solid::ElasticMaterial              material;
+      double                                       temperature_change; // dT at the point
     };
 
     std::vector<double>

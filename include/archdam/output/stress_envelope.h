@@ -1,9 +1,11 @@
 #pragma once
 
 #include <archdam/fe/fe_space.h>
+#include <archdam/geometry/dam_surface.h>
 #include <archdam/output/face_evaluation.h>
 #include <archdam/output/recorder.h>
 #include <archdam/physics/solid/materials.h>
+#include <archdam/physics/solid/thermal.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -30,14 +32,8 @@ namespace archdam::output
    * faces (ids 100 + 2k, 101 + 2k from the splitter), the dam-rock interface
    * (an interior face) and a truncated base (ids 1, 2) are never taken.
    *
-   * Each face belongs to one part of the surface, from the outward normal n
-   * averaged over the face (axes of doc/theory/conventions.md §3):
-   *  - crest:      n_z is the largest component (the normal within about 45
-   *                degrees of the vertical);
-   *  - upstream:   otherwise, n_x <= -0.1;
-   *  - downstream: otherwise, n_x >= 0.1;
-   *  - side:       the rest, faces that look across the stream or down (the
-   *                free ends of a box model; an arch dam has none).
+   * Each face belongs to one part of the surface, from the outward normal
+   * averaged over the face (geometry::surface_part()).
    *
    * The stress is Hooke's law of the displacement gradient, as for the
    * fields (physics/solid/stress.h). The geometry is fixed, so what the
@@ -55,15 +51,7 @@ namespace archdam::output
   class StressEnvelope : public Recorder
   {
   public:
-    enum class Part
-    {
-      upstream,
-      downstream,
-      crest,
-      side
-    };
-    static std::string
-    name(Part part);
+    using Part = geometry::SurfacePart;
 
     /// The largest and smallest value of one stress over the stage, with
     /// their times (a tie keeps the earlier).
@@ -101,8 +89,10 @@ namespace archdam::output
     face_directions(const dealii::Tensor<1, dim> &n);
 
     /// With @p evaluation (its Evaluate set), also the demand-capacity
-    /// evaluation of the arch and cantilever stresses.
+    /// evaluation of the arch and cantilever stresses. The stress is
+    /// C (eps - alpha dT I) with the dam's temperature change @p temperature.
     StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials,
+                   const physics::solid::TemperatureField &temperature,
                    const std::string &directory, const EvaluationParameters &evaluation = {});
 
     std::string
@@ -154,6 +144,8 @@ namespace archdam::output
     double                    t_prev = 0.;
     std::vector<Face>         faces;
     std::vector<Entry>        entries; // this rank's points
+    /// The temperature change at each entry's point.
+    std::vector<double>       temperature_changes;
     /// d(unit coordinates)/dx at each entry's point.
     std::vector<dealii::Tensor<2, dim>> inverse_jacobians;
     /// The arch and cantilever directions at each entry's point.

@@ -27,6 +27,10 @@ namespace archdam::physics::solid
   {
     prm.enter_subsection("Concrete");
     concrete.add_parameters(prm);
+    prm.add_parameter("Thermal expansion coefficient", concrete.thermal_expansion,
+                      "alpha [1/degree C] of the concrete, for Static loads/Temperature "
+                      "change, from 0 to 1e-4 (concrete: about 1e-5).",
+                      Patterns::Double(0., 1e-4));
     prm.leave_subsection();
     prm.enter_subsection("Rock");
     rock.add_parameters(prm);

@@ -10,8 +10,10 @@ namespace archdam::physics::solid
   using namespace dealii;
 
   StressPostprocessor::StressPostprocessor(const MaterialParameters &materials,
+                                           const TemperatureField   &temperature,
                                            const Layout              layout)
     : materials(materials)
+    , temperature(temperature)
     , layout(layout)
   {}
 
@@ -30,7 +32,8 @@ namespace archdam::physics::solid
         Tensor<2, dim> grad;
         for (unsigned int d = 0; d < dim; ++d)
           grad[d] = inputs.solution_gradients[q][d];
-        const SymmetricTensor<2, dim> sigma = mat.stress(symmetrize(grad));
+        const SymmetricTensor<2, dim> sigma = mat.stress(
+          symmetrize(grad), temperature.change(cell->material_id(), inputs.evaluation_points[q]));
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = 0; j < dim; ++j)
             computed[q](i * dim + j) = sigma[i][j];
@@ -67,12 +70,13 @@ namespace archdam::physics::solid
   UpdateFlags
   StressPostprocessor::get_needed_update_flags() const
   {
-    return update_gradients;
+    return update_gradients | update_quadrature_points;
   }
 
   PeakStress
   peak_major_principal_stress(const fe::FESpace        &space,
                               const MaterialParameters &materials,
+                              const TemperatureField   &temperature,
                               const Vector             &ghosted_u)
   {
     hp::FEValues<dim> hp_fe_values(space.fe_collection, space.q_collection,
@@ -89,7 +93,11 @@ namespace archdam::physics::solid
           const ElasticMaterial &mat = materials.of(cell->material_id());
           for (const unsigned int q : fv.quadrature_point_indices())
             {
-              const double s1 = principal_stresses(mat.stress(symmetrize(grads[q]))).first;
+              const double s1 =
+                principal_stresses(
+                  mat.stress(symmetrize(grads[q]),
+                             temperature.change(cell->material_id(), fv.quadrature_point(q))))
+                  .first;
               if (s1 > local.value)
                 local = {s1, fv.quadrature_point(q)};
             }

@@ -2,6 +2,7 @@
 
 #include <archdam/fe/fe_space.h>
 #include <archdam/physics/solid/materials.h>
+#include <archdam/physics/solid/thermal.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/numerics/data_postprocessor.h>
@@ -26,8 +27,11 @@ namespace archdam::physics::solid
       components
     };
 
-    explicit StressPostprocessor(const MaterialParameters &materials,
-                                 Layout                    layout = Layout::tensor);
+    /// The stress is C (eps - alpha dT I) with the dam's temperature
+    /// change @p temperature (thermal.h).
+    StressPostprocessor(const MaterialParameters &materials,
+                        const TemperatureField   &temperature,
+                        Layout                    layout = Layout::tensor);
 
     void
     evaluate_vector_field(const dealii::DataPostprocessorInputs::Vector<dim> &inputs,
@@ -41,6 +45,7 @@ namespace archdam::physics::solid
 
   private:
     const MaterialParameters &materials;
+    const TemperatureField   &temperature;
     const Layout              layout;
   };
 
@@ -52,10 +57,12 @@ namespace archdam::physics::solid
 
   /**
    * The largest major principal stress over the dam's quadrature points, for
-   * a ghosted displacement vector; the same on every rank.
+   * a ghosted displacement vector and the dam's temperature change; the same
+   * on every rank.
    */
   PeakStress
   peak_major_principal_stress(const fe::FESpace        &space,
                               const MaterialParameters &materials,
+                              const TemperatureField   &temperature,
                               const Vector             &ghosted_u);
 } // namespace archdam::physics::solid
