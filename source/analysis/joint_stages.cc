@@ -92,6 +92,29 @@ namespace archdam::analysis
     summary.set("static/ungrouted cantilevers under self-weight: max nodal displacement "
                 "component [m]",
                 max_u);
+    // Whether they stand apart: the normal relative displacement of every
+    // pair, negative where two blocks would overlap.
+    Vector distributed = u;
+    model().space().constraints.distribute(distributed);
+    std::vector<double> w;
+    model().joint_pairs()->relative_displacement(distributed, w);
+    unsigned int closest = 0;
+    for (unsigned int q = 0; q < model().joint_pairs()->size(); ++q)
+      if (w[dim * q] < w[dim * closest])
+        closest = q;
+    if (model().joint_pairs()->size() > 0)
+      {
+        const auto &pair = (*model().joint_pairs())[closest];
+        screen << "  the smallest normal relative displacement of a pair: " << std::setprecision(3)
+               << w[dim * closest] << " m (joint " << pair.joint << " at " << pair.position
+               << "; negative: the blocks would overlap)" << std::endl;
+        const std::string key = "static/ungrouted cantilevers under self-weight: smallest "
+                                "normal relative displacement of a pair [m]/";
+        summary.set(key + "value", w[dim * closest]);
+        summary.set(key + "joint", pair.joint);
+        for (unsigned int d = 0; d < dim; ++d)
+          summary.set(key + std::string(1, "xyz"[d]) + " [m]", pair.position[d]);
+      }
   }
 
   /**

@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -110,12 +111,16 @@ namespace archdam::geometry
 
     /// One node line across the valley: in the canyon (u) or beside it
     /// (side = +1 at +y, -1 at -y; tau = 0 at the abutment, 1 at |y| = Y).
+    /// Below its floor (the lowest foundation step of the blocks it bounds,
+    /// or of the end block beside it) its plan position is the one at the
+    /// floor: vertical prisms of rock.
     struct Column
     {
       bool   canyon;
       double u;
       int    side;
       double tau;
+      double floor;
     };
 
     /// One node position along the stream.
@@ -135,7 +140,13 @@ namespace archdam::geometry
     {
       std::vector<Column>     across;
       std::vector<StreamNode> stream;
-      std::vector<double>     levels; // z of the node levels
+      std::vector<double>     levels; // z of the node levels (uniform in the dam)
+      /// z of the node levels of each column: levels, with each foundation
+      /// step moved to its block's floor in the block's columns.
+      std::vector<std::vector<double>> column_levels;
+      /// The first layer of each block's cells (j0 for a block on the floor).
+      std::vector<unsigned int> block_layer;
+      unsigned int            cells_across_block;
       unsigned int            i0, i1; // canyon cells: i0 <= i < i1
       unsigned int            k0, k1; // dam cells: k0 <= k < k1
       unsigned int            k_rock; // rock cells: k_rock <= k (when rock exists)
@@ -153,16 +164,18 @@ namespace archdam::geometry
         , l(l)
       {}
 
-      /// Plan point of column c on the dam band (s in [0,1]) at elevation zz >= 0.
+      /// Plan point of column c on the dam band (s in [0,1]) at elevation
+      /// zz >= 0 (at its floor if zz is below).
       Point<2>
       band(const Column &c, const double s, const double zz) const
       {
+        const double z = std::max(zz, c.floor);
         if (c.canyon)
           {
-            const Point<3> q = g.dam_point(c.u, s, zz);
+            const Point<3> q = g.column_point(c.u, s, z);
             return {q[0], q[1]};
           }
-        const Point<3> a = g.dam_point(c.side, s, zz);
+        const Point<3> a = g.column_point(c.side, s, z);
         return {a[0], a[1] + c.tau * (c.side * l.y_side - a[1])};
       }
 
@@ -170,7 +183,7 @@ namespace archdam::geometry
       double
       end_y(const Column &c, const double zz) const
       {
-        const double b = g.canyon_half_width(zz);
+        const double b = g.canyon_half_width(std::max(zz, c.floor));
         return c.canyon ? c.u * b : c.side * (b + c.tau * (l.y_side - b));
       }
 
@@ -184,7 +197,7 @@ namespace archdam::geometry
       Point<3>
       operator()(const unsigned int i, const unsigned int k, const unsigned int j) const
       {
-        const double      z  = l.levels[j];
+        const double      z  = l.column_levels[i][j];
         const double      zz = std::min(std::max(z, 0.), g.height());
         const Column     &c  = l.across[i];
         const StreamNode &n  = l.stream[k];
@@ -276,23 +289,101 @@ namespace archdam::geometry
 
       // --- across the valley: side (+y), canyon, side (-y) ---
       const unsigned int n_canyon = p.n_blocks * p.cells_across_block;
+      l.cells_across_block        = p.cells_across_block;
+      // A canyon column stands on the lower floor of the blocks it bounds.
+      const auto column_floor = [&](const unsigned int n) {
+        double floor = std::numeric_limits<double>::max();
+        for (const unsigned int k : {(n + p.cells_across_block - 1) / p.cells_across_block - 1,
+                                     n / p.cells_across_block})
+          if (k < p.n_blocks)
+            floor = std::min(floor, g.block_floor(k));
+        return floor;
+      };
+      const double floor_left = column_floor(0), floor_right = column_floor(n_canyon);
       std::vector<double> tau{0.};
       if (rock)
         {
           double L = 0;
           for (const double z : dam_levels)
             for (const double s : {0., 1.})
-              L = std::max(L, l.y_side - g.dam_point(1., s, z)[1]);
+              L = std::max(L, l.y_side - g.column_point(1., s, std::max(z, floor_left))[1]);
           tau = graded_fractions(L, p.crest_length / n_canyon, p.rock_cell_size);
         }
       for (unsigned int n = tau.size() - 1; n > 0; --n)
-        l.across.push_back({false, 1., +1, tau[n]});
+        l.across.push_back({false, 1., +1, tau[n], floor_left});
       l.i0 = l.across.size();
       for (unsigned int n = 0; n <= n_canyon; ++n)
-        l.across.push_back({true, 1. - 2. * n / n_canyon, 0, 0.});
+        l.across.push_back({true, 1. - 2. * n / n_canyon, 0, 0., column_floor(n)});
       l.i1 = l.across.size() - 1;
       for (unsigned int n = 1; n < tau.size(); ++n)
-        l.across.push_back({false, -1., -1, tau[n]});
+        l.across.push_back({false, -1., -1, tau[n], floor_right});
+
+      // --- foundation steps: each block's cells start at the level nearest
+      // its floor (above the levels of lower neighbours, on the same side of
+      // the water level), which its columns move to the floor exactly ---
+      const unsigned int top = l.levels.size() - 1;
+      l.block_layer.assign(p.n_blocks, l.j0);
+      std::vector<unsigned int> by_floor(p.n_blocks);
+      for (unsigned int k = 0; k < p.n_blocks; ++k)
+        by_floor[k] = k;
+      std::stable_sort(by_floor.begin(), by_floor.end(), [&](const unsigned int a, const unsigned int b) {
+        return g.block_floor(a) < g.block_floor(b);
+      });
+      for (const unsigned int k : by_floor)
+        {
+          const double z_f = g.block_floor(k);
+          if (z_f == 0.)
+            continue;
+          unsigned int J = l.j0 + 1;
+          for (unsigned int j = l.j0 + 1; j < top; ++j)
+            if (std::abs(l.levels[j] - z_f) < std::abs(l.levels[J] - z_f))
+              J = j;
+          if (water && z_f < p.water_level)
+            J = std::min(J, l.j_water - 1);
+          if (water && z_f > p.water_level)
+            J = std::max(J, l.j_water + 1);
+          for (const unsigned int nb : {k - 1, k + 1})
+            if (nb < p.n_blocks && g.block_floor(nb) < z_f)
+              J = std::max(J, l.block_layer[nb] + 1);
+          if (J >= top || (water && z_f < p.water_level && J >= l.j_water))
+            arch_dam_input_error(
+              "Cells over height (" + std::to_string(nz) + ") is too small to give the "
+              "foundation steps of the blocks (block " + std::to_string(k) + " at " +
+              number_text(z_f) + " m) their own layers; use more.");
+          l.block_layer[k] = J;
+        }
+      for (const Column &c : l.across)
+        {
+          // anchors (level index, z), the steps of the blocks the column bounds
+          std::vector<std::pair<unsigned int, double>> anchors{{l.j0, 0.}, {top, H}};
+          if (water && l.j_water < top)
+            anchors.emplace_back(l.j_water, p.water_level);
+          if (c.canyon)
+            {
+              const unsigned int n = &c - &l.across[l.i0];
+              for (const unsigned int k : {(n + p.cells_across_block - 1) / p.cells_across_block - 1,
+                                           n / p.cells_across_block})
+                if (k < p.n_blocks && l.block_layer[k] != l.j0)
+                  anchors.emplace_back(l.block_layer[k], g.block_floor(k));
+            }
+          std::sort(anchors.begin(), anchors.end());
+          anchors.erase(std::unique(anchors.begin(), anchors.end()), anchors.end());
+          std::vector<double> z = l.levels;
+          if (anchors.size() == (water && l.j_water < top ? 3u : 2u))
+            {
+              l.column_levels.push_back(z); // no step: the uniform levels
+              continue;
+            }
+          for (unsigned int a = 0; a + 1 < anchors.size(); ++a)
+            {
+              const auto [j_a, z_a] = anchors[a];
+              const auto [j_b, z_b] = anchors[a + 1];
+              AssertThrow(j_b > j_a && z_b > z_a, ExcInternalError());
+              for (unsigned int j = j_a; j <= j_b; ++j)
+                z[j] = z_a + (z_b - z_a) * (j - j_a) / (j_b - j_a);
+            }
+          l.column_levels.push_back(z);
+        }
 
       // --- along the stream ---
       const double x_r  = water ? g.reservoir_end_x() : 0.;
@@ -381,7 +472,7 @@ namespace archdam::geometry
       if (i < 0 || k < 0 || j < 0 || i >= ni || k >= nk || j >= nj)
         return Region::none;
       const bool canyon = i >= long(l.i0) && i < long(l.i1);
-      if (canyon && j >= long(l.j0))
+      if (canyon && j >= long(l.block_layer[(i - l.i0) / l.cells_across_block]))
         {
           if (k >= long(l.k0) && k < long(l.k1))
             return Region::dam;

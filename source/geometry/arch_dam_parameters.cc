@@ -2,6 +2,7 @@
 // explained in doc/arch-dam-geometry.md).
 
 #include <archdam/base/input_error.h>
+#include <archdam/base/selection.h>
 #include <archdam/geometry/arch_dam_parameters.h>
 
 namespace archdam::geometry
@@ -67,6 +68,14 @@ namespace archdam::geometry
                       "(material id 10+k) counts from the left bank looking "
                       "downstream (+y).",
                       Patterns::Integer(1, 89));
+    add_selection(prm, "Joints", joints,
+                  SelectionNames<JointLayout>{{"vertical", JointLayout::vertical},
+                                              {"fanned", JointLayout::fanned}},
+                  "How the contraction joints run (doc/arch-dam-geometry.md §2). vertical: "
+                  "as built, vertical planes radial in plan at the crest, each block founded "
+                  "on a horizontal step excavated in the canyon where its inner joint meets "
+                  "the canyon wall; fanned: radial to the arch at every elevation, every "
+                  "block on the canyon floor (the joints lean with the abutments).");
     prm.add_parameter("Cells across each block", cells_across_block,
                       "Cells along the arch in each block.", Patterns::Integer(1, 100));
     prm.add_parameter("Cells through thickness", cells_through,

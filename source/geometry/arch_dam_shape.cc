@@ -84,6 +84,72 @@ namespace archdam::geometry
         if (!(crown_upstream_face(p.water_level * n / 100.) > reservoir_end_x()))
           arch_dam_input_error("the reservoir is shorter than the dam's upstream overhang; "
                                "increase Reservoir length.");
+
+    // The blocks' foundation steps (vertical joints): the lowest elevation
+    // at which the inner plane's mid-thickness point lies within the canyon
+    // (|u'| <= 1), by bisection; the canyon widens upwards, so above it the
+    // plane stays within.
+    floors.assign(p.n_blocks, 0.);
+    if (p.joints == JointLayout::vertical)
+      for (unsigned int k = 0; k < p.n_blocks; ++k)
+        {
+          const double u_a = 1. - 2. * k / p.n_blocks, u_b = 1. - 2. * (k + 1) / p.n_blocks;
+          if (u_a > 0 && u_b < 0)
+            continue; // the crown block
+          const double u_in   = std::abs(u_a) < std::abs(u_b) ? u_a : u_b;
+          const auto   inside = [&](const double z) {
+            double phi;
+            return plane_angle(u_in, 0.5, z, phi) && std::abs(phi) <= abutment_angle(z);
+          };
+          if (inside(0.))
+            continue;
+          double low = 0., high = H;
+          for (unsigned int n = 0; n < 60; ++n)
+            (inside(0.5 * (low + high)) ? high : low) = 0.5 * (low + high);
+          floors[k] = high;
+        }
+  }
+
+  bool
+  ArchDamGeometry::plane_angle(const double u, const double s, const double z, double &phi) const
+  {
+    // The point P(phi) = (x_c(z) - r cos phi, r sin phi) of the arc s, with
+    // r = R(z) + T(phi / phi_a(z), z)(1/2 - s), lies on the plane through
+    // (x_c(H), 0) along (-cos psi, sin psi) where the 2-D cross product
+    // f(phi) = (P_x - x_c(H)) sin psi + P_y cos psi vanishes; f grows with phi
+    // over the dam.
+    const double psi = u * abutment_angle(prm.height), x_H = arch_center_x(prm.height);
+    const double x_c = arch_center_x(z), phi_a = abutment_angle(z);
+    const auto   f   = [&](const double angle) {
+      const double r = arch_radius(z) + arch_thickness(angle / phi_a, z) * (0.5 - s);
+      return (x_c - r * std::cos(angle) - x_H) * std::sin(psi) + r * std::sin(angle) * std::cos(psi);
+    };
+    double low = -1.5, high = 1.5;
+    if (!(f(low) < 0 && f(high) > 0))
+      return false;
+    for (unsigned int n = 0; n < 80 && high - low > 1e-15; ++n)
+      (f(0.5 * (low + high)) > 0 ? high : low) = 0.5 * (low + high);
+    phi = 0.5 * (low + high);
+    return true;
+  }
+
+  Point<3>
+  ArchDamGeometry::column_point(const double u, const double s, const double z) const
+  {
+    if (prm.joints == JointLayout::fanned)
+      return dam_point(u, s, z);
+    double phi;
+    if (!plane_angle(u, s, z, phi))
+      arch_dam_input_error("the vertical joint plane at the crest coordinate u = " +
+                           number_text(u) + " does not meet the arch at elevation " +
+                           number_text(z) + " m; use Joints = fanned or a wider arch.");
+    return dam_point(phi / abutment_angle(z), s, z);
+  }
+
+  double
+  ArchDamGeometry::block_floor(const unsigned int k) const
+  {
+    return floors[k];
   }
 
   double

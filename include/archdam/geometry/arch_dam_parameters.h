@@ -6,6 +6,18 @@
 
 namespace archdam::geometry
 {
+  /// `Mesh/Arch dam/Joints`: how the contraction joints run
+  /// (doc/arch-dam-geometry.md §2).
+  enum class JointLayout
+  {
+    /// Vertical planes, radial in plan at the crest; each block founded on
+    /// a horizontal step of the canyon (as built).
+    vertical,
+    /// Radial to the arch at every elevation, every block on the canyon
+    /// floor (the joints lean with the abutments).
+    fanned
+  };
+
   /**
    * Engineering description of a double-curvature arch dam in its canyon, with
    * the foundation rock and the reservoir (`Mesh/Arch dam`). The defaults are
@@ -37,6 +49,7 @@ namespace archdam::geometry
     double canyon_shape_exponent = 1.;    // m: b(z) = b_0 + (b_H - b_0) (z/H)^m
     // --- blocks and dam cells ---
     unsigned int n_blocks            = 14;
+    JointLayout  joints              = JointLayout::fanned;
     unsigned int cells_across_block  = 2;
     unsigned int cells_through       = 2;
     unsigned int cells_over_height   = 10;

@@ -4,6 +4,8 @@
 
 #include <deal.II/base/point.h>
 
+#include <vector>
+
 namespace archdam::geometry
 {
   /**
@@ -69,6 +71,22 @@ namespace archdam::geometry
     /// (x_c(z) - r cos(phi), r sin(phi), z).
     dealii::Point<3>
     dam_point(double u, double s, double z) const;
+    /// The point of the dam's grid column u (u in [-1, 1]) on the arc s at
+    /// elevation z. Fanned joints: dam_point(u, s, z). Vertical joints: the
+    /// point of the arc s (the circle of radius R(z) + T(u', z)(1/2 - s)
+    /// about the arch centre at z) on the vertical plane through the crest
+    /// arch's centre (x_c(H), 0) at the crest angle u phi_a(H), u' its arch
+    /// coordinate at z; for z at or above the column's foundation step
+    /// (doc/arch-dam-geometry.md §2).
+    dealii::Point<3>
+    column_point(double u, double s, double z) const;
+    /// The elevation of block k's foundation: 0 with fanned joints; with
+    /// vertical joints the elevation at which its inner joint plane (the
+    /// one nearer the crown) meets the canyon wall at the dam's
+    /// mid-thickness line (arch coordinate |u'| = 1), 0 if it does so below
+    /// the canyon floor or the block holds the crown.
+    double
+    block_floor(unsigned int k) const;
     /// Arch angle of a point seen from the arch centre at its elevation:
     /// atan2(y, x_c(z) - x). A point of joint k has angle u_k phi_a(z).
     double
@@ -130,7 +148,14 @@ namespace archdam::geometry
     downstream_canyon_wall(int side, double x, double z) const;
 
   private:
-    ArchDamParameters prm;
-    double            crest_half_width; // b_H
+    /// The arch angle phi at elevation z of the point of arc s on the
+    /// vertical plane of crest coordinate u; false if the plane misses the
+    /// arc within |phi| < 1.5 rad.
+    bool
+    plane_angle(double u, double s, double z, double &phi) const;
+
+    ArchDamParameters   prm;
+    double              crest_half_width; // b_H
+    std::vector<double> floors;           // block_floor(k)
   };
 } // namespace archdam::geometry
