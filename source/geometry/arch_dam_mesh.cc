@@ -290,11 +290,15 @@ namespace archdam::geometry
       // --- across the valley: side (+y), canyon, side (-y) ---
       const unsigned int n_canyon = p.n_blocks * p.cells_across_block;
       l.cells_across_block        = p.cells_across_block;
-      // A canyon column stands on the lower floor of the blocks it bounds.
+      // The blocks on either side of canyon column n (an index past the
+      // blocks for none), and the lower of their floors, the column's.
+      const auto blocks_beside = [&](const unsigned int n) {
+        return std::array<unsigned int, 2>{
+          {(n + p.cells_across_block - 1) / p.cells_across_block - 1, n / p.cells_across_block}};
+      };
       const auto column_floor = [&](const unsigned int n) {
         double floor = std::numeric_limits<double>::max();
-        for (const unsigned int k : {(n + p.cells_across_block - 1) / p.cells_across_block - 1,
-                                     n / p.cells_across_block})
+        for (const unsigned int k : blocks_beside(n))
           if (k < p.n_blocks)
             floor = std::min(floor, g.block_floor(k));
         return floor;
@@ -361,8 +365,7 @@ namespace archdam::geometry
           if (c.canyon)
             {
               const unsigned int n = &c - &l.across[l.i0];
-              for (const unsigned int k : {(n + p.cells_across_block - 1) / p.cells_across_block - 1,
-                                           n / p.cells_across_block})
+              for (const unsigned int k : blocks_beside(n))
                 if (k < p.n_blocks && l.block_layer[k] != l.j0)
                   anchors.emplace_back(l.block_layer[k], g.block_floor(k));
             }
