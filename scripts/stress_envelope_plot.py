@@ -35,16 +35,24 @@ from matplotlib.colors import TwoSlopeNorm
 from matplotlib.ticker import MaxNLocator
 
 
-def read(csv_path):
-    """The rows of the file, by face: {face: [(x, y, z, max_s1, t), ...]}."""
+def read(csv_path, column="max s1 [Pa]"):
+    """The rows of the file, by face: {face: [(x, y, z, value, t), ...]}, value
+    the column named @p column, t its time (that of the column "time of
+    max s1 [s]" for max s1; NaN for a column without one)."""
     faces = {}
     with open(csv_path, newline="") as f:
         reader = csv.reader(f)
-        next(reader)
+        header = next(reader)
+        if column not in header:
+            raise SystemExit(f"{csv_path}: no column '{column}'")
+        i = header.index(column)
+        time_name = "time of " + column.replace(" [Pa]", "") + " [s]"
+        k = header.index(time_name) if time_name in header else None
         for row in reader:
             if row:
-                x, y, z, s1, t = (float(v) for v in row[1:6])
-                faces.setdefault(row[0], []).append((x, y, z, s1, t))
+                x, y, z = (float(v) for v in row[1:4])
+                t = float(row[k]) if k is not None else float("nan")
+                faces.setdefault(row[0], []).append((x, y, z, float(row[i]), t))
     return faces
 
 
@@ -52,11 +60,13 @@ def developed(x, y, radius):
     return y if radius is None else radius * math.atan2(y, radius - x)
 
 
-def draw(csv_path, png_path, title, radius=None):
-    faces = read(csv_path)
+def draw(csv_path, png_path, title, radius=None, column="max s1 [Pa]", scale=1e-6,
+         value_label="largest major principal stress s1 [MPa] (tension +)"):
+    """Draw the column @p column (times @p scale; default s1 in MPa)."""
+    faces = read(csv_path, column)
     panels = [("upstream", "upstream face, seen from the reservoir"),
               ("downstream", "downstream face, seen from downstream")]
-    values = [p[3] / 1e6 for face, _ in panels for p in faces.get(face, [])]
+    values = [p[3] * scale for face, _ in panels for p in faces.get(face, [])]
     if not values:
         raise SystemExit(f"{csv_path}: no upstream or downstream points")
     low, high = min(values), max(values)
@@ -80,7 +90,7 @@ def draw(csv_path, png_path, title, radius=None):
             continue
         h = [developed(p[0], p[1], radius) for p in points]
         z = [p[2] for p in points]
-        s1 = [p[3] / 1e6 for p in points]
+        s1 = [p[3] * scale for p in points]
         triangles = mtri.Triangulation(h, z)
         # Drop the long thin triangles that Delaunay adds across the outline
         # of a curved face (longer than 3x the median edge).
@@ -94,7 +104,9 @@ def draw(csv_path, png_path, title, radius=None):
         mappable = ax.tricontourf(triangles, s1, levels=levels, cmap="RdBu_r", norm=norm)
         k = max(range(len(points)), key=lambda i: s1[i])
         ax.plot([h[k]], [z[k]], "k*", markersize=10, clip_on=False)
-        ax.set_title(f"{label}\n(*) largest: {s1[k]:.3g} MPa at t = {points[k][4]:.2f} s, "
+        when = "" if points[k][4] != points[k][4] else f" at t = {points[k][4]:.2f} s"
+        unit = " MPa" if scale == 1e-6 else ""
+        ax.set_title(f"{label}\n(*) largest: {s1[k]:.3g}{unit}{when}, "
                      f"y = {points[k][1]:.0f} m, z = {points[k][2]:.0f} m", fontsize=10)
         ax.set_aspect("equal", adjustable="box")
         if face == "upstream":
@@ -103,7 +115,7 @@ def draw(csv_path, png_path, title, radius=None):
         ax.set_ylabel("z [m]")
     if mappable is not None:
         fig.colorbar(mappable, ax=axes, shrink=0.85, ticks=ticks if high > low else None,
-                     format="%g", label="largest major principal stress s1 [MPa] (tension +)")
+                     format="%g", label=value_label)
     fig.suptitle(title)
     fig.savefig(png_path, dpi=120)
     plt.close(fig)

@@ -369,11 +369,12 @@ main(int argc, char **argv)
       const auto name = entry.path().filename().string();
       const auto ext  = entry.path().extension().string();
       // summary.json and HDF5 below; the VTU pieces hold binary numbers,
-      // the run lock names its process and start time (not a result);
+      // the run lock names its process and start time (not a result); the
+      // report is drawn from summary.json (its wall times, its folder);
       // compared serially only (under MPI the histories carry the state).
       // The checkpoint directories are not results.
       if (entry.is_directory() || name == "summary.json" || name == ".archdam.lock" ||
-          ext == ".h5" ||
+          name == "report.html" || ext == ".h5" ||
           (n_ranks > 1 && (ext == ".vtu" || ext == ".pvtu")))
         continue;
       ++n_files;

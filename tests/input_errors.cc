@@ -122,6 +122,15 @@ main(int argc, char **argv)
        "Damping/Rock/First frequency=20", "--set", "Damping/Rock/Second frequency=10"});
   run_set("a rock damping mode misspelt", "Damping/Rock/Mode=same as dam");
   run_set("no stage to run", "Analysis/Stages=");
+  run_set("a record suite naming a record that is not there",
+          "Record suite/Records=one: x = /no_such_folder/no_such_record.AT2");
+  run_set("a record suite entry without its name",
+          "Record suite/Records=x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2");
+  run_set("a record suite with a record's scale of 0",
+          "Record suite/Records=one: x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2 * 0");
+  run_set("a record suite with a name given twice",
+          "Record suite/Records=one: x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2; "
+          "one: y = ground_motions/RSN6_IMPVALL.I_I-ELC270.AT2");
   run_set("an output directory inside a file", "Output/Directory=good.prm/results");
   run_set("a negative checkpoint interval", "Checkpoints/Interval (steps)=-5");
   run_set("a negative checkpoint wall-time interval", "Checkpoints/Wall-time interval (s)=-60");

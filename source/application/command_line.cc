@@ -1,5 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/application/command_line.h>
+#include <archdam/application/python_script.h>
+#include <archdam/application/record_suite.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/interrupt.h>
 #include <archdam/base/run_stopped.h>
@@ -140,14 +142,27 @@ namespace archdam
         for (const auto &w : p.warnings)
           say(warnings, "archdam: warning: ", w);
       const output::RunLock lock(p.output.directory, p.analysis.case_name, MPI_COMM_WORLD);
-      analysis::Simulation  simulation(p, MPI_COMM_WORLD, out);
+      if (!p.suite.parse().empty() && !mesh_only && !free_field_check)
+        {
+          if (resume)
+            throw InputError("--resume continues one run from its checkpoint; a record suite "
+                             "(Record suite/Records) runs every record anew. Resume one "
+                             "record's run by itself, or run the suite again.");
+          application::run_record_suite(case_file, overrides, p, MPI_COMM_WORLD, out);
+          return 0;
+        }
+      analysis::Simulation simulation(p, MPI_COMM_WORLD, out);
       interrupt::catch_signals();
       if (mesh_only)
         simulation.run_mesh_only();
       else if (free_field_check)
         simulation.run_free_field_check();
       else
-        simulation.run(resume);
+        {
+          simulation.run(resume);
+          if (p.output.report && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+            application::write_report(p.output.directory, out);
+        }
       return 0;
     }
 

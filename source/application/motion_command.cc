@@ -1,4 +1,5 @@
 #include <archdam/application/motion_command.h>
+#include <archdam/application/python_script.h>
 #include <archdam/base/case_file.h>
 #include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
@@ -492,17 +493,6 @@ Errors in the input give one message and exit code 1.
         }
     }
 
-    /// @p s as one word of a shell command line, so that a printed command
-    /// can be pasted as it is.
-    std::string
-    shell_quote(const std::string &s)
-    {
-      std::string q = "'";
-      for (const char c : s)
-        q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-      return q + "'";
-    }
-
     /// The plot @p path (a PNG: the histories, and the spectrum against the
     /// target): its data next to it (the name with .histories.csv and
     /// .spectrum.csv), drawn from them by scripts/plot_motion.py with
@@ -523,21 +513,17 @@ Errors in the input give one message and exit code 1.
         std::filesystem::path(path).replace_extension(".spectrum.csv").string();
       write_histories(histories, r);
       write_spectrum(spectrum, r, target, damping);
-      const std::string python = "/usr/bin/python3";
-      const std::string script = std::string(ARCHDAM_SCRIPTS_DIR) + "/plot_motion.py";
-      const std::string command =
-        python + " " + shell_quote(script) + " --histories " + shell_quote(histories) +
-        " --spectrum " + shell_quote(spectrum) + " --output " + shell_quote(path) +
-        " --title " + shell_quote(title) + " --damping " + str(damping) +
-        (match_range.empty() ? "" : " --match-range " + match_range);
+      std::vector<std::string> arguments = {"--histories", histories, "--spectrum", spectrum,
+                                            "--output",    path,      "--title",    title,
+                                            "--damping",   str(damping)};
+      if (!match_range.empty())
+        arguments.insert(arguments.end(), {"--match-range", match_range});
       out << "wrote " << histories << " and " << spectrum << "\n";
-      std::error_code ec;
-      if (std::filesystem::exists(python, ec) && std::filesystem::exists(script, ec) &&
-          std::system((command + " > /dev/null 2>&1").c_str()) == 0)
+      if (application::run_python_script("plot_motion.py", arguments))
         out << "wrote " << path << "\n";
       else
-        out << "the plot " << path << " needs " << python << " with matplotlib; draw it with\n  "
-            << command << "\n";
+        out << "the plot " << path << " needs /usr/bin/python3 with matplotlib; draw it with\n  "
+            << application::python_command("plot_motion.py", arguments) << "\n";
     }
 
     /// --spectrum-damping, checked before anything is computed or printed.

@@ -15,7 +15,7 @@ namespace archdam::output
     // joint_output.cc, monitor_histories.cc, pressure_recorder.cc,
     // stress_envelope.cc, field_writer.cc, mesh_writer.cc, checkpoint.cc).
     static const std::regex ours(
-      R"((summary\.json|histories\.(csv|h5)|checkpoint(\.old)?)"
+      R"((summary\.json|report\.html|suite\.(csv|json)|histories\.(csv|h5)|checkpoint(\.old)?)"
       R"(|(solution|modes|mesh|joints?|stress|pressure)(_.*)?\.(vtu|pvtu|pvd|h5|xdmf|csv)))");
     std::vector<std::string> names;
     std::error_code          ec;

@@ -35,6 +35,14 @@ namespace archdam::output
                       Patterns::Bool());
     prm.add_parameter("Timer summary", timer_summary,
                       "Print wall times per stage at the end.", Patterns::Bool());
+    prm.add_parameter("Report", report,
+                      "At the end of a run (and of a record suite) write report.html: one "
+                      "self-contained page with the case, the model, the input, the static "
+                      "state, the peaks, the joints, the stress and DCR maps, the energy "
+                      "balance and the warnings (doc/user-guide.md, \"The run report\"); "
+                      "needs /usr/bin/python3 with matplotlib, else the command that writes "
+                      "it is printed.",
+                      Patterns::Bool());
     add_selection(prm, "Earlier results", earlier_results, earlier_results_names(),
                   "What a new run (not --resume) does with an earlier run's results in "
                   "Directory (its summary, histories, tables, field, mesh and checkpoint "

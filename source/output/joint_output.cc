@@ -79,6 +79,8 @@ namespace archdam::output
     , field_interval(field_interval)
     , peak_opening(pairs.size(), 0.)
     , peak_time(pairs.size(), 0.)
+    , peak_slip(pairs.size(), 0.)
+    , peak_slip_time(pairs.size(), 0.)
   {
     for (const auto &[name, pair] : monitored_pairs(p.monitor_points, pairs))
       monitored.push_back(pair);
@@ -118,6 +120,12 @@ namespace archdam::output
             peak_opening[i] = gap;
             peak_time[i]    = time;
           }
+        const double slip = joints.slip(i);
+        if (slip > peak_slip[i])
+          {
+            peak_slip[i]      = slip;
+            peak_slip_time[i] = time;
+          }
         if (-gap > deepest)
           {
             deepest      = -gap;
@@ -131,14 +139,14 @@ namespace archdam::output
   JointOutput::save(std::ostream &out) const
   {
     HistoryRecorder::save(out);
-    binary::write_all(out, peak_opening, peak_time, pvd_records, deepest, deepest_time, deepest_pair);
+    binary::write_all(out, peak_opening, peak_time, peak_slip, peak_slip_time, pvd_records, deepest, deepest_time, deepest_pair);
   }
 
   void
   JointOutput::load(std::istream &in)
   {
     HistoryRecorder::load(in);
-    binary::read_all(in, peak_opening, peak_time, pvd_records, deepest, deepest_time, deepest_pair);
+    binary::read_all(in, peak_opening, peak_time, peak_slip, peak_slip_time, pvd_records, deepest, deepest_time, deepest_pair);
     if (peak_opening.size() != pairs.size())
       throw InputError("Checkpoint: the saved joint state has " +
                        std::to_string(peak_opening.size()) + " node pairs, the model " +
@@ -209,12 +217,15 @@ namespace archdam::output
         crest_z[pairs[i].joint] =
           std::max(crest_z.count(pairs[i].joint) ? crest_z[pairs[i].joint] : -1e300, z);
       }
-    std::vector<int> peak_of(pairs.n_joints(), -1), crest_of(pairs.n_joints(), -1);
+    std::vector<int> peak_of(pairs.n_joints(), -1), crest_of(pairs.n_joints(), -1),
+      slip_of(pairs.n_joints(), -1);
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
         const unsigned int j = pairs[i].joint;
         if (peak_of[j] < 0 || peak_opening[i] > peak_opening[peak_of[j]])
           peak_of[j] = i;
+        if (slip_of[j] < 0 || peak_slip[i] > peak_slip[slip_of[j]])
+          slip_of[j] = i;
         if (std::round(pairs[i].position[2] * 1e6) / 1e6 == crest_z[j] &&
             (crest_of[j] < 0 || peak_opening[i] > peak_opening[crest_of[j]]))
           crest_of[j] = i;
@@ -245,6 +256,9 @@ namespace archdam::output
           for (unsigned int d = 0; d < dim; ++d)
             summary.set(key + " " + std::string(1, "xyz"[d]) + " [m]",
                         pairs[peak_of[j]].position[d]);
+          const std::string slip = stage + "/joints/joint " + std::to_string(j) + "/peak slip";
+          summary.set(slip + " [m]", peak_slip[slip_of[j]]);
+          summary.set(slip + " time [s]", peak_slip_time[slip_of[j]]);
         }
     const std::string key = stage + "/joints/largest penetration";
     summary.set(key + " [m]", deepest);

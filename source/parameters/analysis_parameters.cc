@@ -1,6 +1,10 @@
+#include <archdam/base/input_error.h>
 #include <archdam/parameters/analysis_parameters.h>
 
 #include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <set>
 
 namespace archdam::analysis
 {
@@ -42,5 +46,88 @@ namespace archdam::analysis
                       "Write the mode shapes to modes.vtu (one displacement field per "
                       "mode) in the output directory.",
                       Patterns::Bool());
+  }
+
+  void
+  RecordSuiteParameters::add_parameters(ParameterHandler &prm)
+  {
+    prm.add_parameter(
+      "Records", records,
+      "The same case run under several records, one after another, each into "
+      "its own folder Output/Directory/NAME, then the statistics of every peak "
+      "over the records in Output/Directory/suite.csv and suite.json "
+      "(doc/user-guide.md, \"Record suites\"). 'NAME: x = FILE * SCALE, y = "
+      "FILE * SCALE, z = FILE * SCALE; NAME: ...': a name of letters, digits, "
+      "'-' and '_', then the record of each direction it shakes (a direction "
+      "not named has no motion; '* SCALE' may be left out: 1), found as "
+      "Ground motion/Component x/File is; each record replaces the case's "
+      "Ground motion components (Source = file, File, Scale factor), their "
+      "Format, Units and Processing kept. Empty: no suite, one run.",
+      Patterns::Anything());
+  }
+
+  std::vector<SuiteRecord>
+  RecordSuiteParameters::parse() const
+  {
+    std::vector<SuiteRecord> suite;
+    std::set<std::string>    names;
+    for (const auto &entry : Utilities::split_string_list(records, ';'))
+      {
+        const auto colon = entry.find(':');
+        const auto refuse = [&](const std::string &what) {
+          throw InputError("Record suite/Records: '" + entry + "': " + what +
+                           " (expected 'NAME: x = FILE * SCALE, y = FILE * SCALE, z = FILE * "
+                           "SCALE', records separated by ';').");
+        };
+        if (colon == std::string::npos)
+          refuse("no ':' after the record's name");
+        SuiteRecord r;
+        r.name = Utilities::trim(entry.substr(0, colon));
+        if (r.name.empty() ||
+            r.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                     "0123456789-_") != std::string::npos)
+          refuse("the name '" + r.name + "' is not made of letters, digits, '-' and '_'");
+        if (!names.insert(r.name).second)
+          refuse("the name '" + r.name + "' is given twice");
+        std::array<bool, 3> given = {{false, false, false}};
+        for (const auto &component : Utilities::split_string_list(entry.substr(colon + 1), ','))
+          {
+            const auto eq = component.find('=');
+            const auto axis = Utilities::trim(component.substr(0, eq));
+            if (eq == std::string::npos || axis.size() != 1 ||
+                std::string("xyz").find(axis) == std::string::npos)
+              refuse("'" + component + "' does not start with 'x =', 'y =' or 'z ='");
+            const unsigned int d = std::string("xyz").find(axis);
+            if (given[d])
+              refuse("direction " + axis + " is given twice");
+            given[d]              = true;
+            const std::string rhs = component.substr(eq + 1);
+            const auto        star = rhs.find('*');
+            r.file[d]             = Utilities::trim(rhs.substr(0, star));
+            if (r.file[d].empty())
+              refuse("direction " + axis + " names no file");
+            if (star != std::string::npos)
+              {
+                const std::string text = Utilities::trim(rhs.substr(star + 1));
+                std::size_t       used = 0;
+                try
+                  {
+                    r.scale[d] = std::stod(text, &used);
+                  }
+                catch (const std::exception &)
+                  {
+                    used = 0;
+                  }
+                if (used == 0 || used != text.size() || !std::isfinite(r.scale[d]) ||
+                    r.scale[d] == 0. || std::abs(r.scale[d]) > 1e3)
+                  refuse("the scale of direction " + axis + ", '" + text +
+                         "', is not a number from -1000 to 1000 other than 0");
+              }
+          }
+        if (!given[0] && !given[1] && !given[2])
+          refuse("no direction is given a record");
+        suite.push_back(r);
+      }
+    return suite;
   }
 } // namespace archdam::analysis

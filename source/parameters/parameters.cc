@@ -1,4 +1,5 @@
 #include <archdam/base/case_file.h>
+#include <archdam/base/data_files.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/selection.h>
 #include <archdam/parameters/parameters.h>
@@ -10,6 +11,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <functional>
 #include <sstream>
 
@@ -37,6 +39,7 @@ namespace archdam
     section("Static loads", [&] { static_loads.add_parameters(prm); });
     section("Analysis", [&] { analysis.add_parameters(prm); });
     section("Modal analysis", [&] { modal.add_parameters(prm); });
+    section("Record suite", [&] { suite.add_parameters(prm); });
     section("Monitors", [&] { monitors.add_parameters(prm); });
     section("Output", [&] { output.add_parameters(prm); });
     section("Checkpoints", [&] { checkpoints.add_parameters(prm); });
@@ -142,6 +145,23 @@ namespace archdam
       loads::parse_temperature_table(p.static_loads.temperature_change);
       p.checkpoints.check();
       p.evaluation.check();
+      // Every record of a suite is there before the first run starts.
+      for (const auto &r : p.suite.parse())
+        {
+          if (!p.analysis.runs("dynamic"))
+            throw InputError("Record suite/Records is given, but Analysis/Stages has no dynamic "
+                             "stage to run the records in: add dynamic to Stages, or leave "
+                             "Records empty.");
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!r.file[d].empty())
+              {
+                const std::string what = "Record suite/Records (record '" + r.name +
+                                         "', direction " + std::string(1, "xyz"[d]) + ")";
+                const std::string file = find_input_file(r.file[d], p.base_directory, what);
+                if (!std::filesystem::is_regular_file(file))
+                  throw InputError(what + ": no file '" + file + "'.");
+              }
+        }
     }
 
     /// Every value outside Output and Checkpoints, "path = value" a line,

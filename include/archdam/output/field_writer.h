@@ -25,6 +25,7 @@ namespace archdam::output
     std::string  field_formats   = "vtu, hdf5";
     bool         progress        = true;
     bool         timer_summary   = true;
+    bool         report          = true;
     EarlierResults earlier_results = EarlierResults::replace;
 
     void

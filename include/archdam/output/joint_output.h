@@ -78,6 +78,9 @@ namespace archdam::output
     const unsigned int               field_interval;
     std::vector<unsigned int>        monitored;
     std::vector<double>              peak_opening, peak_time;
+    /// The largest slip of each pair so far (its tangential relative
+    /// displacement since grouting) and when [m, s].
+    std::vector<double>              peak_slip, peak_slip_time;
     /// The largest penetration (-gap) of any pair so far, its pair and time.
     double                           deepest = 0., deepest_time = 0.;
     unsigned int                     deepest_pair = 0;

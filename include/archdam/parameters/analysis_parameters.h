@@ -6,7 +6,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace archdam::analysis
 {
@@ -32,5 +34,31 @@ namespace archdam::analysis
 
     void
     add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /// One record of a suite: its name and, per direction (x, y, z), the
+  /// record file and its scale factor; an empty file: no motion in that
+  /// direction.
+  struct SuiteRecord
+  {
+    std::string                name;
+    std::array<std::string, 3> file;
+    std::array<double, 3>      scale = {{1., 1., 1.}};
+  };
+
+  /// The `Record suite` subsection (doc/user-guide.md, "Record suites"): the
+  /// same case run under several records, one after another.
+  struct RecordSuiteParameters
+  {
+    std::string records;
+
+    void
+    add_parameters(dealii::ParameterHandler &prm);
+
+    /// The records, parsed from `Records` ("NAME: x = FILE * SCALE, y = ...;
+    /// NAME: ..."); empty without a suite. Throws InputError naming the
+    /// record and what is wrong with it.
+    std::vector<SuiteRecord>
+    parse() const;
   };
 } // namespace archdam::analysis

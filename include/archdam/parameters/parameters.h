@@ -43,6 +43,7 @@ namespace archdam
     loads::StaticLoadParameters              static_loads;
     analysis::AnalysisParameters             analysis;
     analysis::ModalParameters                modal;
+    analysis::RecordSuiteParameters          suite;
     output::MonitorParameters                monitors;
     output::OutputParameters                 output;
     output::CheckpointParameters             checkpoints;

@@ -1,0 +1,47 @@
+#pragma once
+
+// A record suite (doc/user-guide.md, "Record suites"): the same case run under
+// several records, one after another, and the statistics of every peak over
+// them, as the guidelines read a suite (the mean of seven or more records,
+// else the largest).
+
+#include <archdam/parameters/parameters.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace archdam::application
+{
+  /// One peak over the records of a suite. The standard deviation is the
+  /// sample's (n - 1; 0 for one record); the design value is the mean with
+  /// seven records or more, else the largest.
+  struct SuiteStatistics
+  {
+    double mean = 0., largest = 0., standard_deviation = 0., mean_plus_sd = 0., design = 0.;
+  };
+
+  SuiteStatistics
+  suite_statistics(const std::vector<double> &values);
+
+  /// The peaks of a run's summary.json that a suite compares, by their path
+  /// in it, as magnitudes: each joint's peak opening and slip, the monitors'
+  /// peaks, and per face of the stress envelope the largest major principal
+  /// stress, the arch and cantilever DCR and, per DCR level, the longest CID
+  /// and the overstressed share of the area.
+  std::vector<std::pair<std::string, double>>
+  run_peaks(const std::string &summary_file);
+
+  /// Run the case @p case_file (with @p overrides; read as @p p) once per
+  /// record of p.suite into Output/Directory/NAME, then write suite.csv and
+  /// suite.json there. Collective.
+  void
+  run_record_suite(const std::string              &case_file,
+                   const std::vector<std::string> &overrides,
+                   const Parameters               &p,
+                   MPI_Comm                        comm,
+                   std::ostream                   &out);
+} // namespace archdam::application

@@ -1,0 +1,202 @@
+#include <archdam/analysis/simulation.h>
+#include <archdam/application/python_script.h>
+#include <archdam/application/record_suite.h>
+#include <archdam/base/input_error.h>
+#include <archdam/output/atomic_file.h>
+#include <archdam/output/summary.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <sstream>
+
+namespace archdam::application
+{
+  using namespace dealii;
+
+  SuiteStatistics
+  suite_statistics(const std::vector<double> &values)
+  {
+    SuiteStatistics s;
+    if (values.empty())
+      return s;
+    const double n = values.size();
+    for (const double v : values)
+      s.mean += v;
+    s.mean /= n;
+    s.largest = *std::max_element(values.begin(), values.end());
+    if (values.size() > 1)
+      {
+        double squares = 0.;
+        for (const double v : values)
+          squares += (v - s.mean) * (v - s.mean);
+        s.standard_deviation = std::sqrt(squares / (n - 1.));
+      }
+    s.mean_plus_sd = s.mean + s.standard_deviation;
+    s.design       = values.size() >= 7 ? s.mean : s.largest;
+    return s;
+  }
+
+  namespace
+  {
+    bool
+    ends_with(const std::string &text, const std::string &end)
+    {
+      return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+    }
+
+    bool
+    starts_with(const std::string &text, const std::string &start)
+    {
+      return text.rfind(start, 0) == 0;
+    }
+
+    /// Whether the summary entry at @p path is a peak a suite compares.
+    bool
+    is_suite_peak(const std::string &path)
+    {
+      if (starts_with(path, "dynamic/joints/joint "))
+        return ends_with(path, "/peak opening [m]") || ends_with(path, "/peak slip [m]");
+      if (starts_with(path, "peaks/"))
+        return ends_with(path, "/value");
+      if (starts_with(path, "stress envelope/"))
+        return ends_with(path, "max major principal stress [Pa]/value") ||
+               ends_with(path, "DCR/largest") || ends_with(path, "/longest CID [s]") ||
+               ends_with(path, "/overstressed share of the area");
+      return false;
+    }
+  } // namespace
+
+  std::vector<std::pair<std::string, double>>
+  run_peaks(const std::string &summary_file)
+  {
+    boost::property_tree::ptree tree;
+    try
+      {
+        boost::property_tree::read_json(summary_file, tree);
+      }
+    catch (const std::exception &e)
+      {
+        throw InputError("Record suite: cannot read the run's results '" + summary_file +
+                         "': " + e.what());
+      }
+    std::vector<std::pair<std::string, double>> peaks;
+    const std::function<void(const boost::property_tree::ptree &, const std::string &)> walk =
+      [&](const boost::property_tree::ptree &node, const std::string &path) {
+        for (const auto &[key, child] : node)
+          {
+            const std::string here = path.empty() ? key : path + "/" + key;
+            if (!child.empty())
+              walk(child, here);
+            else if (is_suite_peak(here))
+              peaks.emplace_back(here, std::abs(child.get_value<double>()));
+          }
+      };
+    walk(tree, "");
+    return peaks;
+  }
+
+  void
+  run_record_suite(const std::string              &case_file,
+                   const std::vector<std::string> &overrides,
+                   const Parameters               &p,
+                   const MPI_Comm                  comm,
+                   std::ostream                   &out)
+  {
+    const auto         records = p.suite.parse();
+    const bool         talk    = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string &folder  = p.output.directory;
+    for (unsigned int k = 0; k < records.size(); ++k)
+      {
+        const auto &r = records[k];
+        if (talk)
+          out << "Record suite: record " << k + 1 << " of " << records.size() << ", " << r.name
+              << " (results in " << folder << "/" << r.name << ")" << std::endl;
+        // The record replaces the case's motion; the record's own run is not
+        // a suite.
+        std::vector<std::string> record_overrides = overrides;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const std::string component = "Ground motion/Component " + std::string(1, "xyz"[d]) + "/";
+            std::ostringstream scale;
+            scale << std::setprecision(17) << r.scale[d];
+            record_overrides.push_back(component + "Source=file");
+            record_overrides.push_back(component + "File=" + r.file[d]);
+            record_overrides.push_back(component + "Scale factor=" + scale.str());
+          }
+        record_overrides.push_back("Output/Directory=" + folder + "/" + r.name);
+        record_overrides.push_back("Record suite/Records=");
+        const Parameters     record_parameters = read_parameters(case_file, record_overrides);
+        analysis::Simulation simulation(record_parameters, comm, out);
+        simulation.run();
+        if (talk && p.output.report)
+          write_report(folder + "/" + r.name, out);
+      }
+    if (!talk)
+      return;
+
+    // Every record's peaks, in the order of the first record's summary.
+    std::vector<std::vector<std::pair<std::string, double>>> peaks;
+    for (const auto &r : records)
+      peaks.push_back(run_peaks(folder + "/" + r.name + "/summary.json"));
+    std::ostringstream csv;
+    csv << "quantity";
+    for (const auto &r : records)
+      csv << ',' << r.name;
+    csv << ",mean,largest,standard deviation,mean + 1 sd,design value\n"
+        << std::setprecision(std::numeric_limits<double>::max_digits10);
+    output::Summary summary;
+    summary.set("records", records.size());
+    for (const auto &r : records)
+      for (unsigned int d = 0; d < 3; ++d)
+        if (!r.file[d].empty())
+          {
+            const std::string key = "record/" + r.name + "/" + std::string(1, "xyz"[d]);
+            summary.set(key + "/file", r.file[d]);
+            summary.set(key + "/scale", r.scale[d]);
+          }
+    summary.set("design value", records.size() >= 7 ? "the mean (seven records or more)" :
+                                                      "the largest (fewer than seven records)");
+    for (unsigned int i = 0; i < peaks[0].size(); ++i)
+      {
+        const std::string  &name = peaks[0][i].first;
+        std::vector<double> values;
+        for (unsigned int k = 0; k < records.size(); ++k)
+          {
+            const auto found = std::find_if(peaks[k].begin(), peaks[k].end(),
+                                            [&](const auto &e) { return e.first == name; });
+            if (found == peaks[k].end())
+              throw InputError("Record suite: the run of record '" + records[k].name +
+                               "' has no '" + name + "' in its summary.json, the first "
+                               "record's has.");
+            values.push_back(found->second);
+          }
+        const auto s = suite_statistics(values);
+        csv << name;
+        for (const double v : values)
+          csv << ',' << v;
+        csv << ',' << s.mean << ',' << s.largest << ',' << s.standard_deviation << ','
+            << s.mean_plus_sd << ',' << s.design << '\n';
+        const std::string key = "peaks/" + name + "/";
+        for (unsigned int k = 0; k < records.size(); ++k)
+          summary.set(key + records[k].name, values[k]);
+        summary.set(key + "mean", s.mean);
+        summary.set(key + "largest", s.largest);
+        summary.set(key + "standard deviation", s.standard_deviation);
+        summary.set(key + "mean + 1 sd", s.mean_plus_sd);
+        summary.set(key + "design value", s.design);
+      }
+    output::write_atomically(folder + "/suite.csv", [&](std::ostream &f) { f << csv.str(); });
+    summary.write(folder + "/suite.json");
+    out << "Record suite: " << records.size() << " records; every peak over them in " << folder
+        << "/suite.csv and suite.json (doc/user-guide.md, \"Record suites\")" << std::endl;
+    if (p.output.report)
+      write_report(folder, out);
+  }
+} // namespace archdam::application

@@ -1,0 +1,222 @@
+// A record suite (issue "evaluation", must show 3; doc/user-guide.md,
+// "Record suites"): the coarse arch dam with 13 frictional joints
+// (prm/arch_dam_joints_coarse.prm) run under three real records of the data
+// folder, each with its scales, 0.3 s of each (a short window keeps the test
+// quick): El Centro 1940 (x and y scaled by 2), Rinaldi 1994 (three
+// components, y reversed, the vertical halved) and Sylmar 1994 (x and y).
+// Checked against references outside the suite's own arithmetic:
+//  - suite.csv's per-record values against each record's own summary.json,
+//    and its mean, largest, sample standard deviation, mean + 1 sd and design
+//    value (the largest, fewer than seven records) recomputed here from
+//    those summaries (1e-14 of the row's largest value: the file holds 17
+//    digits);
+//  - each record's scale: its run's PGA in g against the largest |value| of
+//    the AT2 file read here times the scale (1e-12), and Sylmar's run has no
+//    vertical motion;
+//  - the Rinaldi record run alone, as a case with its files and scales set
+//    in Ground motion, gives the suite's Rinaldi column (1e-9 relative, and
+//    openings of round-off size, below 1e-12 m, as zero: serially the two
+//    runs agree exactly, under MPI the parallel sums' order differs);
+//  - the statistics of seven given values (1 to 7): mean 4, sample standard
+//    deviation sqrt(28/6), design value the mean (1e-15);
+//  - the suite's report.html links to the records' own reports.
+
+#include <archdam/analysis/simulation.h>
+#include <archdam/application/record_suite.h>
+#include <archdam/parameters/parameters.h>
+
+#include "archdam_tests.h"
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace dealii;
+using namespace archdam;
+
+namespace
+{
+  const std::string case_file = SOURCE_DIR "/../prm/arch_dam_joints_coarse.prm";
+
+  const std::vector<std::string> common = {"Time integration/End time=0.3",
+                                           "Evaluation/Evaluate=true",
+                                           "Evaluation/Tensile strength=1e6",
+                                           "Output/Field output interval=0",
+                                           "Output/Progress=false",
+                                           "Output/Timer summary=false"};
+
+  /// Largest |value| of a PEER AT2 file (4 header lines, then values in g).
+  double
+  largest_in_file(const std::string &name)
+  {
+    std::ifstream in(testing::ground_motions + name);
+    std::string   line;
+    for (unsigned int i = 0; i < 4; ++i)
+      std::getline(in, line);
+    double largest = 0., v;
+    while (in >> v)
+      largest = std::max(largest, std::abs(v));
+    return largest;
+  }
+
+  /// The rows of a CSV file, split at commas.
+  std::vector<std::vector<std::string>>
+  read_csv(const std::string &file)
+  {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream                         in(file);
+    for (std::string line; std::getline(in, line);)
+      rows.push_back(Utilities::split_string_list(line, ','));
+    return rows;
+  }
+
+  bool
+  close(const double a, const double b, const double tol)
+  {
+    return std::abs(a - b) <= tol * std::max(std::abs(b), 1e-300);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  auto                            &log  = testing::log();
+  const bool                       root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+
+  const std::vector<std::string> names = {"elcentro", "rinaldi", "sylmar"};
+  std::vector<std::string>       overrides = common;
+  overrides.push_back("Output/Directory=suite");
+  overrides.push_back(
+    "Record suite/Records="
+    "elcentro: x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2 * 2, "
+    "y = ground_motions/RSN6_IMPVALL.I_I-ELC270.AT2 * 2; "
+    "rinaldi: x = ground_motions/Rinaldi228.AT2, y = ground_motions/Rinaldi318.AT2 * -1, "
+    "z = ground_motions/RinaldiUP.AT2 * 0.5; "
+    "sylmar: x = ground_motions/RSN1084_NORTHR_SCS052.AT2, "
+    "y = ground_motions/RSN1084_NORTHR_SCS142.AT2");
+  const Parameters   p = read_parameters(case_file, overrides);
+  std::ostringstream quiet;
+  application::run_record_suite(case_file, overrides, p, MPI_COMM_WORLD, quiet);
+  log << "records parsed: " << p.suite.parse().size() << std::endl;
+
+  // The Rinaldi record alone, as an ordinary case.
+  std::vector<std::string> alone = common;
+  for (const auto &o : {"Output/Directory=rinaldi_alone",
+                        "Ground motion/Component x/File=ground_motions/Rinaldi228.AT2",
+                        "Ground motion/Component y/File=ground_motions/Rinaldi318.AT2",
+                        "Ground motion/Component y/Scale factor=-1",
+                        "Ground motion/Component z/File=ground_motions/RinaldiUP.AT2",
+                        "Ground motion/Component z/Scale factor=0.5"})
+    alone.emplace_back(o);
+  const Parameters p_alone = read_parameters(case_file, alone);
+  {
+    analysis::Simulation simulation(p_alone, MPI_COMM_WORLD, quiet);
+    simulation.run();
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (!root)
+    return 0;
+
+  // Each record's scale, from its run's summary against the file.
+  const auto pga = [](const std::string &record, const char axis) {
+    boost::property_tree::ptree summary;
+    boost::property_tree::read_json("suite/" + record + "/summary.json", summary);
+    return summary.get<double>(boost::property_tree::ptree::path_type(
+      std::string("ground motion|") + axis + "|PGA [g]", '|'));
+  };
+  log << "El Centro x at twice the file's PGA: "
+      << testing::yes(close(pga("elcentro", 'x'), 2 * largest_in_file("RSN6_IMPVALL.I_I-ELC180.AT2"), 1e-12))
+      << "\nRinaldi y reversed, the file's PGA: "
+      << testing::yes(close(pga("rinaldi", 'y'), largest_in_file("Rinaldi318.AT2"), 1e-12))
+      << "\nRinaldi z at half the file's PGA: "
+      << testing::yes(close(pga("rinaldi", 'z'), 0.5 * largest_in_file("RinaldiUP.AT2"), 1e-12))
+      << "\nSylmar x at the file's PGA: "
+      << testing::yes(close(pga("sylmar", 'x'), largest_in_file("RSN1084_NORTHR_SCS052.AT2"), 1e-12))
+      << std::endl;
+  boost::property_tree::ptree sylmar;
+  boost::property_tree::read_json("suite/sylmar/summary.json", sylmar);
+  log << "Sylmar has no vertical motion: "
+      << testing::yes(!sylmar.get_child_optional(boost::property_tree::ptree::path_type(
+        "ground motion|z", '|')))
+      << std::endl;
+
+  // suite.csv against the records' summaries.
+  const auto rows = read_csv("suite/suite.csv");
+  log << "suite.csv header:";
+  for (const auto &cell : rows.empty() ? std::vector<std::string>() : rows[0])
+    log << " [" << cell << "]";
+  log << std::endl;
+  std::vector<std::vector<std::pair<std::string, double>>> peaks;
+  for (const auto &name : names)
+    peaks.push_back(application::run_peaks("suite/" + name + "/summary.json"));
+  const auto rinaldi_alone = application::run_peaks("rinaldi_alone/summary.json");
+  unsigned int n_joint_openings = 0, n_slips = 0, n_dcr = 0, n_rows_ok = 0, n_alone_ok = 0;
+  bool same_quantities = rows.size() == peaks[0].size() + 1;
+  for (unsigned int i = 0; same_quantities && i < peaks[0].size(); ++i)
+    {
+      const auto &row = rows[i + 1];
+      const auto &name = peaks[0][i].first;
+      same_quantities = row.size() == 9 && row[0] == name && rinaldi_alone[i].first == name;
+      for (unsigned int k = 0; k < 3 && same_quantities; ++k)
+        same_quantities = peaks[k][i].first == name;
+      if (!same_quantities)
+        break;
+      n_joint_openings += name.find("peak opening") != std::string::npos;
+      n_slips += name.find("peak slip") != std::string::npos;
+      n_dcr += name.find("DCR/largest") != std::string::npos;
+      // recomputed here: mean, largest, sample standard deviation
+      const double a = peaks[0][i].second, b = peaks[1][i].second, c = peaks[2][i].second;
+      const double mean    = (a + b + c) / 3.;
+      const double largest = std::max({a, b, c});
+      const double sd =
+        std::sqrt(((a - mean) * (a - mean) + (b - mean) * (b - mean) + (c - mean) * (c - mean)) / 2.);
+      const std::vector<double> expected = {a, b, c, mean, largest, sd, mean + sd, largest};
+      bool                      ok       = true;
+      // to round-off at the row's scale (a standard deviation of equal
+      // values is 0 or a few ulps of them, depending on the order of sums)
+      for (unsigned int k = 0; k < expected.size(); ++k)
+        ok = ok && std::abs(std::stod(row[k + 1]) - expected[k]) <= 1e-14 * largest;
+      n_rows_ok += ok;
+      if (!ok)
+        {
+          log << "  differs: " << name << ":";
+          for (unsigned int k = 0; k < expected.size(); ++k)
+            log << " " << row[k + 1] << " (" << expected[k] << ")";
+          log << std::endl;
+        }
+      n_alone_ok += std::abs(rinaldi_alone[i].second - b) <= std::max(1e-9 * std::abs(b), 1e-12);
+    }
+  log << "the records' summaries hold the same peaks, in the rows of suite.csv: "
+      << testing::yes(same_quantities) << "\npeaks compared: joint openings " << n_joint_openings
+      << ", slips " << n_slips << ", DCR " << n_dcr << ", all " << peaks[0].size()
+      << "\nrows whose values and statistics match the summaries: " << n_rows_ok
+      << "\nRinaldi alone gives the suite's Rinaldi column: " << n_alone_ok << " of "
+      << peaks[0].size() << std::endl;
+
+  boost::property_tree::ptree suite;
+  boost::property_tree::read_json("suite/suite.json", suite);
+  log << "suite.json: " << suite.get<std::string>("records") << " records, design value "
+      << suite.get<std::string>("design value") << std::endl;
+
+  // The suite's report links to each record's, which is there.
+  std::ifstream      report("suite/report.html");
+  std::ostringstream text;
+  text << report.rdbuf();
+  bool linked = !text.str().empty();
+  for (const auto &name : names)
+    linked = linked && text.str().find("href=\"" + name + "/report.html\"") != std::string::npos &&
+             std::ifstream("suite/" + name + "/report.html").good();
+  log << "the suite's report.html links to each record's report.html, which is there: "
+      << testing::yes(linked) << std::endl;
+
+  const auto s = application::suite_statistics({3., 1., 7., 5., 2., 6., 4.});
+  log << "seven values 1 to 7: mean 4, sd sqrt(28/6), mean + sd, design value the mean: "
+      << testing::yes(close(s.mean, 4., 1e-15) && close(s.largest, 7., 0.) &&
+                      close(s.standard_deviation, std::sqrt(28. / 6.), 1e-15) &&
+                      close(s.mean_plus_sd, 4. + std::sqrt(28. / 6.), 1e-15) && s.design == s.mean)
+      << std::endl;
+}
