@@ -14,6 +14,10 @@ writes four PNG files:
 Usage:
   /usr/bin/python3 scripts/plot_arch_dam.py \
       build/tests/arch_dam_default/arch_dam_model.txt doc/figures
+  /usr/bin/python3 scripts/plot_arch_dam.py \
+      build/tests/arch_dam_vertical_joints/arch_dam_model_vertical.txt doc/figures
+(the second, the vertical joints' layout: arch_dam_blocks_vertical.png and
+arch_dam_model_vertical.png)
 """
 import sys
 import os
@@ -179,10 +183,15 @@ def main():
     faces, arches, crown, canyon = read(path)
     water = [xyz[:, 2].max() for m, t, xyz in faces if t == 3]
     water_level = max(water) if water else 0.0
-    plan_view(arches, canyon, os.path.join(outdir, "arch_dam_plan.png"))
-    crown_view(crown, canyon, water_level, os.path.join(outdir, "arch_dam_crown.png"))
-    blocks_view(faces, os.path.join(outdir, "arch_dam_blocks.png"))
-    model_view(faces, os.path.join(outdir, "arch_dam_model.png"))
+    # arch_dam_model_LAYOUT.txt (tests/arch_dam_vertical_joints.cc) draws
+    # the blocks and the model of that joint layout as *_LAYOUT.png
+    stem = os.path.splitext(os.path.basename(path))[0]
+    suffix = stem[len("arch_dam_model"):] if stem.startswith("arch_dam_model") else ""
+    if not suffix:
+        plan_view(arches, canyon, os.path.join(outdir, "arch_dam_plan.png"))
+        crown_view(crown, canyon, water_level, os.path.join(outdir, "arch_dam_crown.png"))
+    blocks_view(faces, os.path.join(outdir, f"arch_dam_blocks{suffix}.png"))
+    model_view(faces, os.path.join(outdir, f"arch_dam_model{suffix}.png"))
 
 
 if __name__ == "__main__":

@@ -31,6 +31,8 @@
 //     and the vertical extent are exact; only the arcs are chords).
 //  E. Cell quality: minimum scaled Jacobian at least 0.2, as for the
 //     fanned mesh (doc/arch-dam-geometry.md §6).
+// The test also writes arch_dam_model_vertical.txt, from which
+// scripts/plot_arch_dam.py draws the layout's pictures.
 
 #include <archdam/geometry/arch_dam_mesh.h>
 #include <archdam/geometry/arch_dam_shape.h>
@@ -38,6 +40,8 @@
 #include <archdam/geometry/mesh_checks.h>
 
 #include <deal.II/base/quadrature_lib.h>
+
+#include "arch_dam_plot_data.h"
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/grid/tria.h>
 
@@ -144,6 +148,8 @@ main(int argc, char **argv)
     Triangulation<dim> serial;
     geometry::generate_arch_dam(p, serial);
     tria.copy_triangulation(serial);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      archdam::testing::write_arch_dam_plot_data(g, serial, "arch_dam_model_vertical.txt");
   }
 
   // B and C: joints and blocks
