@@ -178,8 +178,11 @@ def headline_section(leaves, rows):
         slip = max(rows, key=lambda r: r[5])
         facts.append([f"largest joint slip [mm] (joint {slip[0]})", slip[5]])
     for key, value in leaves.items():
-        if key.startswith("peaks/") and key.endswith("/value"):
-            facts.append([f"peak {key[len('peaks/'):-len('/value')]}", value])
+        # the monitors' displacements and tensions here; all their peaks below
+        name = key[len("peaks/"):-len("/value")]
+        if key.startswith("peaks/") and key.endswith("/value") and (
+                name.endswith(("[m]", ".s1 [Pa]")) or "major principal" in name):
+            facts.append([f"peak {name}", value])
     for face in ("upstream", "downstream"):
         for quantity in ("max major principal stress [Pa]/value", "arch DCR/largest",
                          "cantilever DCR/largest"):
