@@ -128,6 +128,9 @@ main(int argc, char **argv)
           "Record suite/Records=x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2");
   run_set("a record suite with a record's scale of 0",
           "Record suite/Records=one: x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2 * 0");
+  run_archdam("a record suite scaled to the target over periods in the wrong order",
+              {"good.prm", "--set", "Record suite/Scale to target=true", "--set",
+               "Record suite/Shortest period=2", "--set", "Record suite/Longest period=1"});
   run_set("a record suite with a name given twice",
           "Record suite/Records=one: x = ground_motions/RSN6_IMPVALL.I_I-ELC180.AT2; "
           "one: y = ground_motions/RSN6_IMPVALL.I_I-ELC270.AT2");

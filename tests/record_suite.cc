@@ -19,9 +19,16 @@
 //    runs agree exactly, under MPI the parallel sums' order differs);
 //  - the statistics of seven given values (1 to 7): mean 4, sample standard
 //    deviation sqrt(28/6), design value the mean (1e-15);
-//  - the suite's report.html links to the records' own reports.
+//  - the suite's report.html links to the records' own reports;
+//  - Scale to target: the factor brings the record's horizontal spectrum
+//    (the geometric mean of x and y) to the target on average in log over
+//    the period range, recomputed here from the scaled components' spectra
+//    (1e-12); twice the record gives half the factor (1e-12); a suite with
+//    Scale to target applies it (suite.json's factor 1e-11, its run's PGA
+//    the file's times scale and factor, 1e-10).
 
 #include <archdam/analysis/simulation.h>
+#include <archdam/loads/response_spectrum.h>
 #include <archdam/application/record_suite.h>
 #include <archdam/parameters/parameters.h>
 
@@ -118,8 +125,74 @@ main(int argc, char **argv)
     simulation.run();
   }
   MPI_Barrier(MPI_COMM_WORLD);
+
+  // Scale to target: a suite of the Rinaldi record alone, scaled to the
+  // target spectrum of Ground motion/Generated motion (the default, NB
+  // 35047, PGA 0.1 g) over 0.1 to 0.8 s.
+  std::vector<std::string> targeted = common;
+  for (const auto &o : {"Output/Directory=targeted", "Output/Report=false",
+                        "Record suite/Records=rinaldi: x = ground_motions/Rinaldi228.AT2, "
+                        "y = ground_motions/Rinaldi318.AT2 * -1, z = ground_motions/RinaldiUP.AT2 * 0.5",
+                        "Record suite/Scale to target=true", "Record suite/Shortest period=0.1",
+                        "Record suite/Longest period=0.8"})
+    targeted.emplace_back(o);
+  const Parameters p_targeted = read_parameters(case_file, targeted);
+  application::run_record_suite(case_file, targeted, p_targeted, MPI_COMM_WORLD, quiet);
+  const auto   settings = p_targeted.ground_motion.generated.settings(0, "");
+  const double factor   = application::scale_to_target(
+    loads::GroundMotion(p_alone.ground_motion, p_alone.base_directory), settings.target,
+    settings.damping, 0.1, 0.8);
+  // its definition, recomputed here: the scaled record's horizontal
+  // spectrum (the geometric mean of x and y) over the target, averaged in
+  // log over 40 periods evenly spaced in log T, is 1
+  const loads::GroundMotion rinaldi(p_alone.ground_motion, p_alone.base_directory);
+  const auto                periods = loads::log_spaced_periods(0.1, 0.8, 40);
+  double                    log_ratio = 0.;
+  for (unsigned int d = 0; d < 2; ++d)
+    {
+      auto scaled = rinaldi.record(d);
+      for (double &a : scaled.values)
+        a *= factor;
+      const auto spectrum = loads::response_spectrum(scaled, periods, settings.damping);
+      for (unsigned int i = 0; i < periods.size(); ++i)
+        log_ratio += 0.5 * std::log(spectrum.pseudo_acceleration[i] /
+                                    settings.target.acceleration(periods[i]));
+    }
+  // linear in the record: twice the record, half the factor
+  std::vector<std::string> doubled = alone;
+  for (const auto &o : {"Ground motion/Component x/Scale factor=2",
+                        "Ground motion/Component y/Scale factor=-2",
+                        "Ground motion/Component z/Scale factor=1"})
+    doubled.emplace_back(o);
+  const Parameters p_doubled      = read_parameters(case_file, doubled);
+  const double     factor_doubled = application::scale_to_target(
+    loads::GroundMotion(p_doubled.ground_motion, p_doubled.base_directory), settings.target,
+    settings.damping, 0.1, 0.8);
+  MPI_Barrier(MPI_COMM_WORLD);
   if (!root)
     return 0;
+  {
+    boost::property_tree::ptree suite, run;
+    boost::property_tree::read_json("targeted/suite.json", suite);
+    boost::property_tree::read_json("targeted/rinaldi/summary.json", run);
+    const auto at = [](const boost::property_tree::ptree &t, const std::string &path) {
+      return t.get<double>(boost::property_tree::ptree::path_type(path, '|'));
+    };
+    log << "scale to target: the mean log ratio of the scaled spectrum to the target is 0 "
+           "(1e-12): "
+        << testing::yes(std::abs(log_ratio / periods.size()) < 1e-12)
+        << "\n  twice the record, half the factor (1e-12): "
+        << testing::yes(close(factor_doubled, factor / 2., 1e-12))
+        << "\n  the suite's factor is this one (1e-11): "
+        << testing::yes(close(at(suite, "record|rinaldi|factor to the target"), factor, 1e-11))
+        << "\n  its run's PGA in x and z: the file's times the factor and the record's scale "
+           "(1e-10): "
+        << testing::yes(close(at(run, "ground motion|x|PGA [g]"),
+                              factor * largest_in_file("Rinaldi228.AT2"), 1e-10) &&
+                        close(at(run, "ground motion|z|PGA [g]"),
+                              0.5 * factor * largest_in_file("RinaldiUP.AT2"), 1e-10))
+        << std::endl;
+  }
 
   // Each record's scale, from its run's summary against the file.
   const auto pga = [](const std::string &record, const char axis) {

@@ -3,6 +3,7 @@
 #include <archdam/application/record_suite.h>
 #include <archdam/base/input_error.h>
 #include <archdam/output/atomic_file.h>
+#include <archdam/loads/response_spectrum.h>
 #include <archdam/output/summary.h>
 
 #include <boost/property_tree/json_parser.hpp>
@@ -41,6 +42,34 @@ namespace archdam::application
     s.mean_plus_sd = s.mean + s.standard_deviation;
     s.design       = values.size() >= 7 ? s.mean : s.largest;
     return s;
+  }
+
+  double
+  scale_to_target(const loads::GroundMotion   &motion,
+                  const loads::TargetSpectrum &target,
+                  const double                 damping,
+                  const double                 period_min,
+                  const double                 period_max,
+                  const unsigned int           n)
+  {
+    const auto          periods = loads::log_spaced_periods(period_min, period_max, n);
+    std::vector<double> log_horizontal(periods.size(), 0.);
+    unsigned int        horizontal = 0;
+    for (unsigned int d = 0; d < 2; ++d)
+      if (motion.has_component(d))
+        {
+          ++horizontal;
+          const auto spectrum = loads::response_spectrum(motion.record(d), periods, damping);
+          for (unsigned int i = 0; i < periods.size(); ++i)
+            log_horizontal[i] += std::log(spectrum.pseudo_acceleration[i]);
+        }
+    if (horizontal == 0)
+      throw InputError("Record suite: Scale to target needs a horizontal (x or y) component in "
+                       "every record.");
+    double mean = 0.;
+    for (unsigned int i = 0; i < periods.size(); ++i)
+      mean += std::log(target.acceleration(periods[i])) - log_horizontal[i] / horizontal;
+    return std::exp(mean / periods.size());
   }
 
   namespace
@@ -112,27 +141,48 @@ namespace archdam::application
     const auto         records = p.suite.parse();
     const bool         talk    = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string &folder  = p.output.directory;
+    std::vector<double> factors;
     for (unsigned int k = 0; k < records.size(); ++k)
       {
         const auto &r = records[k];
         if (talk)
           out << "Record suite: record " << k + 1 << " of " << records.size() << ", " << r.name
               << " (results in " << folder << "/" << r.name << ")" << std::endl;
-        // The record replaces the case's motion; the record's own run is not
-        // a suite.
-        std::vector<std::string> record_overrides = overrides;
-        for (unsigned int d = 0; d < 3; ++d)
+        // The record replaces the case's motion (scaled by its own scales
+        // times the factor to the target); the record's own run is not a
+        // suite.
+        const auto with_record = [&](const double factor) {
+          std::vector<std::string> o = overrides;
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              const std::string component =
+                "Ground motion/Component " + std::string(1, "xyz"[d]) + "/";
+              std::ostringstream scale;
+              scale << std::setprecision(17) << factor * r.scale[d];
+              o.push_back(component + "Source=file");
+              o.push_back(component + "File=" + r.file[d]);
+              o.push_back(component + "Scale factor=" + scale.str());
+            }
+          o.push_back("Output/Directory=" + folder + "/" + r.name);
+          o.push_back("Record suite/Records=");
+          return o;
+        };
+        double factor = 1.;
+        if (p.suite.scale_to_target)
           {
-            const std::string component = "Ground motion/Component " + std::string(1, "xyz"[d]) + "/";
-            std::ostringstream scale;
-            scale << std::setprecision(17) << r.scale[d];
-            record_overrides.push_back(component + "Source=file");
-            record_overrides.push_back(component + "File=" + r.file[d]);
-            record_overrides.push_back(component + "Scale factor=" + scale.str());
+            const Parameters as_given = read_parameters(case_file, with_record(1.));
+            const auto       settings =
+              p.ground_motion.generated.settings(0, "Ground motion, Generated motion: ");
+            factor = scale_to_target(loads::GroundMotion(as_given.ground_motion,
+                                                         as_given.base_directory),
+                                     settings.target, settings.damping, p.suite.period_min,
+                                     p.suite.period_max);
+            if (talk)
+              out << "  scaled to the target over " << p.suite.period_min << " to "
+                  << p.suite.period_max << " s by " << factor << std::endl;
           }
-        record_overrides.push_back("Output/Directory=" + folder + "/" + r.name);
-        record_overrides.push_back("Record suite/Records=");
-        const Parameters     record_parameters = read_parameters(case_file, record_overrides);
+        factors.push_back(factor);
+        const Parameters     record_parameters = read_parameters(case_file, with_record(factor));
         analysis::Simulation simulation(record_parameters, comm, out);
         simulation.run();
         if (talk && p.output.report)
@@ -153,14 +203,18 @@ namespace archdam::application
         << std::setprecision(std::numeric_limits<double>::max_digits10);
     output::Summary summary;
     summary.set("records", records.size());
-    for (const auto &r : records)
-      for (unsigned int d = 0; d < 3; ++d)
-        if (!r.file[d].empty())
-          {
-            const std::string key = "record/" + r.name + "/" + std::string(1, "xyz"[d]);
-            summary.set(key + "/file", r.file[d]);
-            summary.set(key + "/scale", r.scale[d]);
-          }
+    for (unsigned int k = 0; k < records.size(); ++k)
+      {
+        const auto &r = records[k];
+        for (unsigned int d = 0; d < 3; ++d)
+          if (!r.file[d].empty())
+            {
+              const std::string key = "record/" + r.name + "/" + std::string(1, "xyz"[d]);
+              summary.set(key + "/file", r.file[d]);
+              summary.set(key + "/scale", r.scale[d]);
+            }
+        summary.set("record/" + r.name + "/factor to the target", factors[k]);
+      }
     summary.set("design value", records.size() >= 7 ? "the mean (seven records or more)" :
                                                       "the largest (fewer than seven records)");
     for (unsigned int i = 0; i < peaks[0].size(); ++i)

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <set>
+#include <sstream>
 
 namespace archdam::analysis
 {
@@ -64,6 +65,35 @@ namespace archdam::analysis
       "Ground motion components (Source = file, File, Scale factor), their "
       "Format, Units and Processing kept. Empty: no suite, one run.",
       Patterns::Anything());
+    prm.add_parameter(
+      "Scale to target", scale_to_target,
+      "Scale each record of the suite, on top of its own scales, by the one factor that "
+      "brings its horizontal 5 % spectrum to the target spectrum of Ground motion/Generated "
+      "motion over the period range: the geometric mean over 40 periods spaced evenly in log T "
+      "of target / record, the record's horizontal spectrum being the geometric mean of its x "
+      "and y components' (the one of them it has); the vertical gets the same factor "
+      "(doc/user-guide.md, \"Record suites\").",
+      Patterns::Bool());
+    prm.add_parameter("Shortest period", period_min,
+                      "The period range of Scale to target: its shortest period [s] (practice: "
+                      "about 0.2 times the dam's first period).",
+                      Patterns::Double(0.));
+    prm.add_parameter("Longest period", period_max,
+                      "The period range of Scale to target: its longest period [s] (practice: "
+                      "about 1.5 times the dam's first period).",
+                      Patterns::Double(0.));
+  }
+
+  void
+  RecordSuiteParameters::check() const
+  {
+    if (scale_to_target && !(period_min > 0. && period_min < period_max))
+      {
+        std::ostringstream text;
+        text << "Record suite: Scale to target needs 0 < Shortest period < Longest period, got "
+             << period_min << " and " << period_max << " s.";
+        throw InputError(text.str());
+      }
   }
 
   std::vector<SuiteRecord>

@@ -145,6 +145,7 @@ namespace archdam
       loads::parse_temperature_table(p.static_loads.temperature_change);
       p.checkpoints.check();
       p.evaluation.check();
+      p.suite.check();
       // Every record of a suite is there before the first run starts.
       for (const auto &r : p.suite.parse())
         {

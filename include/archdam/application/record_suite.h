@@ -5,6 +5,8 @@
 // them, as the guidelines read a suite (the mean of seven or more records,
 // else the largest).
 
+#include <archdam/loads/design_spectrum.h>
+#include <archdam/loads/ground_motion.h>
 #include <archdam/parameters/parameters.h>
 
 #include <deal.II/base/mpi.h>
@@ -34,6 +36,20 @@ namespace archdam::application
   /// and the overstressed share of the area.
   std::vector<std::pair<std::string, double>>
   run_peaks(const std::string &summary_file);
+
+  /// The factor Scale to target applies to a record whose motion (scaled
+  /// by its own scales) is @p motion: exp of the mean of ln(target(T) /
+  /// S_h(T)) over @p n periods spaced evenly in log T from @p period_min to
+  /// @p period_max, S_h the geometric mean of the pseudo-accelerations of the
+  /// x and y components (the one it has) at @p damping. InputError for a
+  /// record without a horizontal component.
+  double
+  scale_to_target(const loads::GroundMotion     &motion,
+                  const loads::TargetSpectrum   &target,
+                  double                         damping,
+                  double                         period_min,
+                  double                         period_max,
+                  unsigned int                   n = 40);
 
   /// Run the case @p case_file (with @p overrides; read as @p p) once per
   /// record of p.suite into Output/Directory/NAME, then write suite.csv and

@@ -51,6 +51,11 @@ namespace archdam::analysis
   struct RecordSuiteParameters
   {
     std::string records;
+    /// Scale each record to the target spectrum (Ground motion/Generated
+    /// motion) over [period_min, period_max].
+    bool   scale_to_target = false;
+    double period_min      = 0.1;
+    double period_max      = 1.;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
@@ -60,5 +65,9 @@ namespace archdam::analysis
     /// record and what is wrong with it.
     std::vector<SuiteRecord>
     parse() const;
+
+    /// InputError for a period range that is not 0 < min < max.
+    void
+    check() const;
   };
 } // namespace archdam::analysis
