@@ -10,21 +10,22 @@ namespace archdam::application
   {
     const std::string python = "/usr/bin/python3";
 
+    /// @p s as one word of a shell command line.
+    std::string
+    shell_quote(const std::string &s)
+    {
+      std::string q = "'";
+      for (const char c : s)
+        q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+      return q + "'";
+    }
+
     std::string
     script_path(const std::string &script)
     {
       return std::string(ARCHDAM_SCRIPTS_DIR) + "/" + script;
     }
   } // namespace
-
-  std::string
-  shell_quote(const std::string &s)
-  {
-    std::string q = "'";
-    for (const char c : s)
-      q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-  }
 
   std::string
   python_command(const std::string &script, const std::vector<std::string> &arguments)

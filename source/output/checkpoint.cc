@@ -22,7 +22,9 @@ namespace archdam::output
   namespace
   {
     constexpr char          magic[8] = {'A', 'R', 'C', 'H', 'C', 'K', 'P', 'T'};
-    constexpr std::uint32_t format_version = 4;
+    // 5: the joints' recorder keeps each pair's peak slip (a checkpoint of
+    // version 4 would be read out of step)
+    constexpr std::uint32_t format_version = 5;
 
     struct Header
     {

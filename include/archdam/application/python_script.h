@@ -9,13 +9,9 @@
 
 namespace archdam::application
 {
-  /// @p s as one word of a shell command line, so that a printed command
-  /// can be pasted as it is.
-  std::string
-  shell_quote(const std::string &s);
-
   /// The command line running scripts/@p script with @p arguments (each
-  /// quoted).
+  /// but the options "--name" quoted, so that a printed command can be
+  /// pasted as it is).
   std::string
   python_command(const std::string &script, const std::vector<std::string> &arguments);
 
@@ -23,10 +19,7 @@ namespace archdam::application
   /// /usr/bin/python3 or the script is missing or the script fails.
   bool
   run_python_script(const std::string &script, const std::vector<std::string> &arguments);
-} // namespace archdam::application
 
-namespace archdam::application
-{
   /// Write the run report @p folder/report.html with scripts/run_report.py
   /// (a run's results, or a record suite's) and say so on @p out; where
   /// Python or matplotlib is missing, print the command that writes it.
