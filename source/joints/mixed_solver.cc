@@ -94,8 +94,8 @@ namespace archdam::joints
     // kappa > 0 the direction converges with the forces instead of by a
     // damped fixed-point iteration, which needed hundreds of iterations when
     // the slip increment is small against tau / r. One row per pair unknown
-    // (the open pairs' rows f = 0), so that a change of a few pairs' states
-    // or slip directions changes a few rows of the kept LU (PairSystem).
+    // (the open pairs' rows f = 0): a sticking pair's rows are those of the
+    // base that PairSystem keeps factorized, the others enter by low rank.
     const unsigned int m = dim * pairs.size();
     const auto        &own = system.pairs();
     if (own.empty())
@@ -136,18 +136,8 @@ namespace archdam::joints
       parts.rhs     = s_of[r_ik] - target[r_ik];
       return parts;
     };
-    const auto rows_of = [&](const unsigned int i) {
-      RowsOfPair rows{state[i], {}, 0., 0.};
-      if (state[i] == PairState::slip)
-        {
-          rows.direction = direction[i];
-          rows.kappa     = slip_ratio[i];
-          rows.friction  = strength(i).friction;
-        }
-      return rows;
-    };
     dealii::Vector<double> x;
-    switch (system.solve(C_rows, m, hc, row_of, rows_of, x))
+    switch (system.solve(C_rows, m, hc, row_of, x))
       {
         case PairSystem::Solve::factorized:
           ++factorizations;

@@ -334,8 +334,9 @@ namespace archdam::joints
     /// the pair systems' LUs [bytes].
     std::size_t
     memory() const;
-    /// Fixed-state systems solved with a new LU of the whole system, and
-    /// with the kept LU updated by the rows that changed (all systems: the
+    /// Pair systems' bases factorized (once per stage and system, and after
+    /// a checkpoint), and fixed-state systems solved with the kept LU
+    /// updated by the rows that differ from the base (all systems: the
     /// joints' own too).
     unsigned long factorizations = 0, updated_solves = 0;
     /// Steps that joint by joint handed to all pairs at once.

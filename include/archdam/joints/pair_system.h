@@ -1,9 +1,7 @@
 #pragma once
 
 #include <archdam/base/types.h>
-#include <archdam/joints/contact_law.h>
 
-#include <deal.II/base/tensor.h>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -23,32 +21,20 @@ namespace archdam::joints
     double                  rhs = 0.;
   };
 
-  /// What a pair's rows of the fixed-state system depend on besides C, h
-  /// and its augmentation: while it is the same, so are the rows.
-  struct RowsOfPair
-  {
-    PairState                      state;
-    dealii::Tensor<1, dim>         direction;
-    double                         kappa, friction;
-    bool
-    operator==(const RowsOfPair &o) const
-    {
-      return state == o.state && direction == o.direction && kappa == o.kappa &&
-             friction == o.friction;
-    }
-  };
-
   /**
    * The fixed-state system of the contact problem on a set of pairs (all of
    * them, or one joint's: doc/theory/joints.md §6 and §12), dense, one row
-   * per pair unknown. The LU of the system as it was at its last
-   * factorization (the base A0) is kept, and the rows R that changed since
-   * are taken in by the Sherman-Morrison-Woodbury formula:
-   *   A = A0 + E_R dR,  Z = A0^{-1} E_R (kept per row while A0 is),
+   * per pair unknown. Its base A0 is the system with every pair in stick,
+   * h C itself, which does not change with the states: its LU is built once,
+   * and the rows R that differ from it (a slipping pair's tangential rows, a
+   * separated pair's rows) are taken in by the Sherman-Morrison-Woodbury
+   * formula:
+   *   A = A0 + E_R dR,  Z = A0^{-1} E_R (kept per row),
    *   x = y - Z T^{-1} t,  y = A0^{-1} b,  T = I + dR Z = A_R Z,
    *   t = dR y = A_R y - b_R
-   * (A_R the new rows; A0_R Z = I and A0_R y = b_R). A0 is refactorized
-   * when R grows beyond a quarter of the rows.
+   * (A_R the new rows; A0_R Z = I and A0_R y = b_R). Every row of the law is
+   * rows of h C plus entries on the pair's own unknowns, so T and t come
+   * from entries of Z, y and b alone.
    */
   class PairSystem
   {
@@ -66,22 +52,20 @@ namespace archdam::joints
     /// How solve() reached the solution.
     enum class Solve
     {
-      factorized, ///< a new LU of the whole system
-      updated,    ///< the kept LU with the rows that changed
-      kept        ///< the kept LU as it is
+      factorized, ///< the base's LU built (the first solve, or after forget())
+      updated,    ///< the kept LU with the rows that differ from the base
+      kept        ///< the kept LU as it is (every pair in stick)
     };
 
     /**
      * Solve the system whose row dim i + k is @p row_of(i, k) (i an index
      * into NodePairs) with h C = @p hc times @p C_rows (C by rows, @p m
-     * pair unknowns in all); @p rows_of(i) says when pair i's rows differ
-     * from the base's. The solution, dim per pair in the order of pairs(),
-     * is left in @p x.
+     * pair unknowns in all). The solution, dim per pair in the order of
+     * pairs(), is left in @p x.
      */
     Solve
     solve(const std::vector<double> &C_rows, unsigned int m, double hc,
           const std::function<SystemRow(unsigned int, unsigned int)> &row_of,
-          const std::function<RowsOfPair(unsigned int)>               &rows_of,
           dealii::Vector<double>                                     &x);
 
     /// The next solve() factorizes anew.
@@ -96,11 +80,11 @@ namespace archdam::joints
     std::vector<unsigned int> pair_indices;
     /// For every unknown of the system, the pair unknown it is (dim i + k).
     std::vector<unsigned int> unknowns;
-    /// The base's LU, what its rows were made of (none before the first),
-    /// and base^{-1} e_j for the rows j changed since (empty where not
-    /// needed).
+    /// The base's LU (empty before the first solve), the h it was built
+    /// with, and base^{-1} e_j for the rows j that have differed from it
+    /// (empty where not needed yet).
     dealii::LAPACKFullMatrix<double>    base;
-    std::vector<RowsOfPair>             base_rows;
+    double                              base_hc = 0.;
     std::vector<dealii::Vector<double>> update_columns;
   };
 } // namespace archdam::joints
