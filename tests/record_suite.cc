@@ -14,9 +14,14 @@
 //    the AT2 file read here times the scale (1e-12), and Sylmar's run has no
 //    vertical motion;
 //  - the Rinaldi record run alone, as a case with its files and scales set
-//    in Ground motion, gives the suite's Rinaldi column (1e-9 relative, and
-//    openings of round-off size, below 1e-12 m, as zero: serially the two
-//    runs agree exactly, under MPI the parallel sums' order differs);
+//    in Ground motion, gives the suite's Rinaldi column (openings of
+//    round-off size, below 1e-12 m, as zero; serially 1e-9 relative, the two
+//    runs agreeing exactly; under MPI 1e-6: MUMPS's parallel factorization
+//    assembles the processes' contributions in the order they arrive, so two
+//    runs of one case differ at round-off, and the coupled dam-water
+//    matrix's delayed pivots can make even the factors' sizes differ (3.70e6
+//    against 3.66e6 entries in one pair of runs, whose joint 11 then opened
+//    by 2.74e-4 m in both, 6e-9 apart));
 //  - the statistics of seven given values (1 to 7): mean 4, sample standard
 //    deviation sqrt(28/6), design value the mean (1e-15);
 //  - the suite's report.html links to the records' own reports;
@@ -228,6 +233,7 @@ main(int argc, char **argv)
     peaks.push_back(application::run_peaks("suite/" + name + "/summary.json"));
   const auto rinaldi_alone = application::run_peaks("rinaldi_alone/summary.json");
   unsigned int n_joint_openings = 0, n_slips = 0, n_dcr = 0, n_rows_ok = 0, n_alone_ok = 0;
+  const double same_run = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 ? 1e-6 : 1e-9;
   bool same_quantities = rows.size() == peaks[0].size() + 1;
   for (unsigned int i = 0; same_quantities && i < peaks[0].size(); ++i)
     {
@@ -261,7 +267,7 @@ main(int argc, char **argv)
             log << " " << row[k + 1] << " (" << expected[k] << ")";
           log << std::endl;
         }
-      n_alone_ok += std::abs(rinaldi_alone[i].second - b) <= std::max(1e-9 * std::abs(b), 1e-12);
+      n_alone_ok += std::abs(rinaldi_alone[i].second - b) <= std::max(same_run * std::abs(b), 1e-12);
     }
   log << "the records' summaries hold the same peaks, in the rows of suite.csv: "
       << testing::yes(same_quantities) << "\npeaks compared: joint openings " << n_joint_openings
