@@ -10,7 +10,7 @@
 //    its histories and spectra, and report the column against the control
 //    motion at the free surface and against the free field at the dam's
 //    base. Its numbers are printed, not checked: the column is meshed with
-//    the case's coarsest rock cells (42 m, about two Q2 cells per shear
+//    the case's coarsest rock cells (52 m on the as-built layout, under two Q2 cells per shear
 //    wavelength at 20 Hz), and what they make of the motion is the finding.
 // B. The same column resolving the band limit f_b = 20 Hz: cells of
 //    c_s / (8 f_b) = 11.4 m and steps of 2.5 ms (20 a period at f_b). At the

@@ -34,7 +34,7 @@ short=(--set "Time integration/Time step=0.005" --set "Time integration/End time
 # every model part, stage and input file of the case (the Pacoima variant
 # still reads its record through the data folder), 3-6 s each.
 coarse=(--set "Finite element/Degree=1" --set "Mesh/Arch dam/Cells across each block=1"
-        --set "Mesh/Arch dam/Cells through thickness=1" --set "Mesh/Arch dam/Cells over height=4")
+        --set "Mesh/Arch dam/Cells through thickness=1" --set "Mesh/Arch dam/Cells over height=9")
 
 passed=0
 failed=0
