@@ -332,4 +332,5 @@ main(int argc, char **argv)
       {"good.prm", "--set", "Contraction joints/Model=frictional contact", "--set",
        "Contraction joints/Solver=monolithic", "--set",
        "Contraction joints/Contact in time=step impulse"});
+  run_set("a low-rank factor with glued joints", "Time integration/Low-rank tolerance=1e-8");
 }

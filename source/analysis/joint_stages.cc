@@ -157,7 +157,7 @@ namespace archdam::analysis
     if (p.joints.grouting == joints::Grouting::after_self_weight)
       {
         time::FactorizedOperator stiffness_factor;
-        stiffness_factor.factorize(stiffness, true, {});
+        stiffness_factor.factorize(stiffness, true);
         solve_ungrouted_self_weight(stiffness_factor, s.u);
         start_load = model().self_weight();
         model().space().constraints.set_zero(start_load);

@@ -123,6 +123,13 @@ namespace archdam
                          "mixed (the monolithic reference solver holds the pairs at their "
                          "positions only): with Solver = monolithic, set Contact in time = "
                          "trapezoidal.");
+      // The compressed factor is the one condensed on the joints' pairs
+      // (time::CondensedFactorization); a case without it would ignore it.
+      if (p.time_integration.low_rank_tolerance > 0. &&
+          !(p.joints.frictional() && p.joints.solver == joints::Solver::mixed))
+        throw InputError("Time integration/Low-rank tolerance compresses the factor condensed on "
+                         "the joints' node pairs (Contraction joints/Model = frictional contact, "
+                         "Solver = mixed); this case has no such factor: set it to 0.");
       // The static loads are applied in the static stage only, and the
       // dynamic stage starts from its state: without it they would be lost.
       if (p.analysis.runs("dynamic") && !p.analysis.runs("static"))

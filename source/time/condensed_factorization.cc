@@ -24,6 +24,9 @@ namespace archdam::time
     Vec        on_zero = nullptr;
     std::vector<MUMPS_INT> irn, jcn, schur_list, perm;
     std::vector<double>    values, schur, rhs, reduced;
+    /// The symmetric scaling D = diag(|a_ii|^(-1/2)) of every unknown (on
+    /// every rank): MUMPS factorizes D A D, whose diagonal entries are ±1.
+    std::vector<double> scaling;
     /// A right-hand side on the interface alone, as MUMPS's sparse one.
     std::vector<double>    sparse_values;
     std::vector<MUMPS_INT> sparse_rows, sparse_start{1, 1};
@@ -96,21 +99,36 @@ namespace archdam::time
     const Mat mat = static_cast<const Mat &>(A);
     PetscInt  first, last;
     petsc_check(MatGetOwnershipRange(mat, &first, &last));
+    std::vector<double> owned_scaling;
     for (PetscInt row = first; row < last; ++row)
       {
         PetscInt           n_cols;
         const PetscInt    *cols;
         const PetscScalar *vals;
         petsc_check(MatGetRow(mat, row, &n_cols, &cols, &vals));
+        double diagonal = 0.;
         for (PetscInt c = 0; c < n_cols; ++c)
           if (cols[c] >= row)
             {
               m.irn.push_back(static_cast<MUMPS_INT>(row + 1));
               m.jcn.push_back(static_cast<MUMPS_INT>(cols[c] + 1));
               m.values.push_back(vals[c]);
+              if (cols[c] == row)
+                diagonal = std::abs(vals[c]);
             }
+        owned_scaling.push_back(diagonal > 0. ? 1. / std::sqrt(diagonal) : 1.);
         petsc_check(MatRestoreRow(mat, row, &n_cols, &cols, &vals));
       }
+    // The symmetric scaling D A D (doc/performance.md §8): the coupled
+    // matrix's water rows are some 1e19 times smaller than the solid's, and
+    // a factorization unaware of it loses digits (and block low-rank
+    // compression, whose dropping tolerance is absolute, drops the water
+    // whole). The ranks own consecutive rows, in rank order.
+    for (const auto &part : Utilities::MPI::all_gather(m.comm, owned_scaling))
+      m.scaling.insert(m.scaling.end(), part.begin(), part.end());
+    AssertThrow(m.scaling.size() == A.m(), ExcInternalError());
+    for (std::size_t e = 0; e < m.values.size(); ++e)
+      m.values[e] *= m.scaling[m.irn[e] - 1] * m.scaling[m.jcn[e] - 1];
     m.id.n       = static_cast<MUMPS_INT>(A.m());
     m.id.nnz_loc = static_cast<MUMPS_INT8>(m.values.size());
     m.id.irn_loc = m.irn.data();
@@ -220,22 +238,38 @@ namespace archdam::time
     m.id.schur = nullptr; // read by the factorization only
 
     m.reduced.resize(k);
+    gamma_scaling.resize(k);
+    for (MUMPS_INT i = 0; i < k; ++i)
+      gamma_scaling[i] = m.scaling[gamma[i]];
     elimination.reset(); // (a deal.II timer starts when made)
     substitution.reset();
   }
 
   CondensedFactorization::~CondensedFactorization() = default;
 
+  // The factorized Schur complement is that of D A D, D_Γ S D_Γ:
+  // S^{-1} = D_Γ (D_Γ S D_Γ)^{-1} D_Γ.
   void
   CondensedFactorization::solve_interface(dealii::Vector<double> &v) const
   {
+    for (unsigned int i = 0; i < v.size(); ++i)
+      v[i] *= gamma_scaling[i];
     schur.solve(v);
+    for (unsigned int i = 0; i < v.size(); ++i)
+      v[i] *= gamma_scaling[i];
   }
 
   void
   CondensedFactorization::solve_interface(LAPACKFullMatrix<double> &V) const
   {
+    const auto scale_rows = [&] {
+      for (unsigned int i = 0; i < V.m(); ++i)
+        for (unsigned int j = 0; j < V.n(); ++j)
+          V(i, j) *= gamma_scaling[i];
+    };
+    scale_rows();
     schur.solve(V);
+    scale_rows();
   }
 
   void
@@ -254,6 +288,8 @@ namespace archdam::time
         petsc_check(VecGetArrayRead(m.on_zero, &a));
         m.rhs.assign(a, a + b.size());
         petsc_check(VecRestoreArrayRead(m.on_zero, &a));
+        for (std::size_t i = 0; i < m.rhs.size(); ++i)
+          m.rhs[i] *= m.scaling[i];
         m.id.rhs     = m.rhs.data();
         m.id.nrhs    = 1;
         m.id.lrhs    = static_cast<MUMPS_INT>(b.size());
@@ -266,7 +302,8 @@ namespace archdam::time
     elimination.stop();
     const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
     y.reinit(reduced.size(), true);
-    std::copy(reduced.begin(), reduced.end(), y.begin());
+    for (unsigned int i = 0; i < y.size(); ++i)
+      y[i] = reduced[i] / gamma_scaling[i];
   }
 
   void
@@ -284,6 +321,8 @@ namespace archdam::time
         // elimination visits only the fronts that hold b's entries, here the
         // interface's, eliminated last.
         m.sparse_values.assign(q.begin(), q.end());
+        for (unsigned int g = 0; g < gamma.size(); ++g)
+          m.sparse_values[g] *= gamma_scaling[g];
         m.sparse_rows.resize(gamma.size());
         for (unsigned int g = 0; g < gamma.size(); ++g)
           m.sparse_rows[g] = static_cast<MUMPS_INT>(gamma[g] + 1);
@@ -306,7 +345,8 @@ namespace archdam::time
     elimination.stop();
     dealii::Vector<double> x_gamma(gamma.size());
     const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
-    std::copy(reduced.begin(), reduced.end(), x_gamma.begin());
+    for (unsigned int g = 0; g < gamma.size(); ++g)
+      x_gamma[g] = reduced[g] / gamma_scaling[g];
     solve_interface(x_gamma);
     expand(x_gamma, x);
     m.icntl(20) = 0;
@@ -319,7 +359,8 @@ namespace archdam::time
     auto      &m    = *mumps;
     const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
     if (host)
-      std::copy(x_gamma.begin(), x_gamma.end(), m.reduced.begin());
+      for (unsigned int g = 0; g < gamma.size(); ++g)
+        m.reduced[g] = x_gamma[g] / gamma_scaling[g];
     m.icntl(26) = 2; // expansion: backward substitution from x_Γ
     substitution.start();
     m.run(3, "expansion");
@@ -328,7 +369,8 @@ namespace archdam::time
       {
         PetscScalar *a;
         petsc_check(VecGetArray(m.on_zero, &a));
-        std::copy(m.rhs.begin(), m.rhs.end(), a);
+        for (std::size_t i = 0; i < m.rhs.size(); ++i)
+          a[i] = m.rhs[i] * m.scaling[i];
         petsc_check(VecRestoreArray(m.on_zero, &a));
       }
     const Vec &vec = static_cast<const Vec &>(x);

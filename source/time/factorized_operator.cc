@@ -16,7 +16,8 @@ namespace archdam::time
 
   void
   FactorizedOperator::factorize(const SparseMatrix &A, const bool positive_definite,
-                                const std::vector<types::global_dof_index> &interface)
+                                const std::vector<types::global_dof_index> &interface,
+                                const double low_rank_tolerance)
   {
     if (interface.empty())
       factorize(static_cast<Mat>(A), positive_definite);
@@ -26,7 +27,9 @@ namespace archdam::time
           petsc_check(KSPDestroy(&ksp));
         condensed_factor.reset(); // never two factorizations at once
         condensed_factor =
-          std::make_unique<CondensedFactorization>(A, positive_definite, interface);
+          std::make_unique<CondensedFactorization>(A, positive_definite, interface,
+                                                   CondensedFactorization::Ordering::nested_dissection,
+                                                   low_rank_tolerance);
       }
   }
 

@@ -26,6 +26,14 @@ namespace archdam::time
                       "Newmark's beta (paper eq. 2.2): 0.25 with Beta1 = 0.5 is "
                       "the average acceleration rule.",
                       Patterns::Double(0., 1.));
+    prm.add_parameter("Low-rank tolerance", low_rank_tolerance,
+                      "Dropping tolerance of the block low-rank compression of the "
+                      "factor of the effective matrix (MUMPS's BLR, relative to the "
+                      "scaled matrix's entries); 0 = the full-rank factor. The steps' "
+                      "substitutions then cost less and are exact to about this "
+                      "tolerance (doc/performance.md §8). For frictional joints with the "
+                      "mixed solver, whose factor is condensed on the node pairs.",
+                      Patterns::Double(0., 1e-3));
   }
 
   void
@@ -117,7 +125,8 @@ namespace archdam::time
                           SAME_NONZERO_PATTERN) == 0,
                   ExcMessage("PETSc MatAXPY failed."));
     add_dashpots_to_effective_matrix();
-    effective_operator.factorize(effective_matrix, positive_definite, factor_interface);
+    effective_operator.factorize(effective_matrix, positive_definite, factor_interface,
+                                 p.low_rank_tolerance);
 
     const IndexSet owned = M.locally_owned_range_indices();
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,

@@ -113,7 +113,8 @@ namespace archdam::time
     struct Mumps;
     std::unique_ptr<Mumps>                   mumps;
     std::vector<dealii::types::global_dof_index>     gamma;
-    dealii::LAPACKFullMatrix<double>         schur; ///< factorized
+    dealii::LAPACKFullMatrix<double>         schur; ///< of D A D, factorized
+    std::vector<double>                      gamma_scaling; ///< D on Γ
     Statistics                               stats;
     mutable dealii::Timer                    elimination, substitution;
   };

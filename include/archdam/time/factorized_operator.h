@@ -31,10 +31,13 @@ namespace archdam::time
     /// `positive_definite` selects Cholesky (true) or symmetric LDL^T.
     /// With an @p interface, the factorization is condensed on it instead
     /// (CondensedFactorization: MUMPS directly, the interface eliminated
-    /// last); solve() then runs its three parts.
+    /// last); solve() then runs its three parts, and a @p
+    /// low_rank_tolerance > 0 asks for its block low-rank factors with that
+    /// dropping tolerance (doc/performance.md §8).
     void
     factorize(const SparseMatrix &A, bool positive_definite,
-              const std::vector<dealii::types::global_dof_index> &interface = {});
+              const std::vector<dealii::types::global_dof_index> &interface = {},
+              double low_rank_tolerance = 0.);
 
     /// The same for a matrix PETSc holds directly (kept referenced by PETSc).
     void

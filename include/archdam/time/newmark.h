@@ -18,6 +18,9 @@ namespace archdam::time
     double end_time  = 0.;
     double beta1     = 0.5;
     double beta2     = 0.25;
+    /// The dropping tolerance of the effective matrix's block low-rank
+    /// factor (0: full rank; doc/performance.md §8).
+    double low_rank_tolerance = 0.;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
