@@ -1,6 +1,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
+#include <archdam/base/version.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/output/mesh_writer.h>
 
@@ -140,6 +141,7 @@ namespace archdam::analysis
   Simulation::write_summary()
   {
     summary.set("case", p.analysis.case_name);
+    summary.set("version", archdam::version());
     summary.set("model/cells", model().triangulation().n_active_cells());
     summary.set("model/dofs", model().space().dof_handler.n_dofs());
     summary.set("model/mpi processes", Utilities::MPI::n_mpi_processes(comm));
