@@ -105,6 +105,18 @@ main(int argc, char **argv)
   run_archdam("a DCR level of 0",
               {"good.prm", "--set", "Evaluation/Evaluate=true", "--set",
                "Evaluation/Tensile strength=3e6", "--set", "Evaluation/DCR levels=0, 1.5, 2"});
+  run_archdam("a performance curve without an area limit",
+              {"good.prm", "--set", "Evaluation/Evaluate=true", "--set",
+               "Evaluation/Tensile strength=3e6", "--set", "Evaluation/Allowed CID at DCR 1=0.4"});
+  run_archdam("an allowed DCR of 1 for the performance curve",
+              {"good.prm", "--set", "Evaluation/Evaluate=true", "--set",
+               "Evaluation/Tensile strength=3e6", "--set", "Evaluation/Allowed CID at DCR 1=0.4",
+               "--set", "Evaluation/Allowed overstressed share=0.2", "--set",
+               "Evaluation/Allowed DCR=1"});
+  run_archdam("a joint band with joints of no tensile strength",
+              {"good.prm", "--set", "Evaluation/Evaluate=true", "--set",
+               "Evaluation/Tensile strength=3e6", "--set", "Evaluation/Joint band width=2", "--set",
+               "Contraction joints/Tensile strength=0"});
   run_set("an end time shorter than one time step", "Time integration/End time=0.004");
   run_set("a temperature table row without its ':'", "Static loads/Temperature change=0 -5, 3");
   run_set("temperature table elevations that do not increase",

@@ -63,7 +63,22 @@
 //    y = 6 m, whose turned normal points upstream too, 4 m x 8 m: 1e-12),
 //    and the summary's overstressed share at each level against the share
 //    of the weights of the points whose closed-form DCR (each with its own
-//    face's arch direction) exceeds it (1e-12).
+//    face's arch direction) exceeds it (1e-12). E3: E1's summary with the
+//    limits DCR 2, CID 0.4 s at DCR 1 and 20 % of the area: the verdict
+//    beyond the limits, naming the upstream arch's largest DCR (2.5 on the
+//    inclined face, more on the end face).
+// F. The bands and the verdict's limits. The same block as two glued
+//    blocks (joint 0 the plane y = 3 before the turn) on a base (the faces
+//    z = 0, id 1), under E1's uniform stress: every upstream and downstream
+//    point within 2.5 m of the base's edges (the block's bottom rectangle,
+//    written here) is left out, and every point within 1 m of the joint's
+//    lines on the faces (written here) has its arch DCR measured against
+//    the joint's strength (a quarter of the concrete's): each point's band
+//    as the closed-form distances say, its arch DCR sigma_a / capacity
+//    (1e-9), the evaluated and left-out areas the points' weights (1e-12).
+//    Then the verdict's rule on five prescribed demands: all within the
+//    limits, and each limit exceeded alone (the DCR, the curve at DCR 1
+//    and at 1.5, the area) named as the only one.
 
 #include <archdam/analysis/simulation.h>
 #include <archdam/geometry/ids.h>
@@ -420,16 +435,20 @@ namespace
     const double                         kappa = 2e-6;
     Tensor<1, dim>                       h{{0.6, 0.8, 0.}};
 
-    TurnedBlock()
+    /// @p founded: the cells y > 3 are block 1 (a glued joint 0 at
+    /// y = 3) and the faces z = 0 the dam's base on the rock (id 1).
+    explicit TurnedBlock(const bool founded = false)
     {
       GridGenerator::subdivided_hyper_rectangle(tria, {2, 2, 2}, Point<dim>(),
                                                 Point<dim>(4, 6, 8));
       for (const auto &cell : tria.active_cell_iterators())
         {
-          cell->set_material_id(ids::first_dam_block);
+          cell->set_material_id(ids::first_dam_block + (founded && cell->center()[1] > 3 ? 1 : 0));
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary())
-              cell->face(f)->set_boundary_id(ids::free_surface_solid);
+              cell->face(f)->set_boundary_id(founded && cell->face(f)->center()[2] < 1e-9 ?
+                                               ids::foundation_bottom :
+                                               ids::free_surface_solid);
         }
       GridTools::transform(
         [](const Point<dim> &p) {
@@ -575,6 +594,8 @@ namespace
     ep.evaluate         = true;
     ep.tensile_strength     = std::abs(sa0) / 2.5;
     ep.compressive_strength = 10 * ep.tensile_strength;
+    ep.allowed_cid                = 0.4; // the verdict, E3
+    ep.allowed_overstressed_share = 0.2;
     const double sign   = sa0 > 0 ? 1. : -1.; // tension first
     {
       output::StressEnvelope envelope(*block.space, block.materials, no_temperature, ".", ep);
@@ -623,6 +644,20 @@ namespace
                              '|')) -
                            compression / ep.compressive_strength),
                   1e-9);
+      // E3: the verdict reads the upstream arch's largest DCR (2.5 on the
+      // inclined face, more on the end face) above the allowed 2.
+      const auto         verdict = json.get<std::string>("evaluation.verdict");
+      const auto         reasons = json.get<std::string>("evaluation.limits exceeded");
+      std::ostringstream named;
+      named << std::setprecision(3) << "upstream arch: largest DCR "
+            << json.get<double>(boost::property_tree::ptree::path_type(
+                 "stress envelope|upstream|arch DCR|largest", '|'))
+            << " above 2";
+      log() << "  E3: the verdict of E1 with the limits DCR 2, CID 0.4 s at DCR 1, share 0.2: "
+            << "beyond the limits, naming '" << named.str() << "': "
+            << testing::yes(verdict.rfind("beyond", 0) == 0 &&
+                            reasons.find(named.str()) != std::string::npos)
+            << std::endl;
     }
     // E2: an arch stress growing with z (the kappa term alone): the share
     // of the upstream face whose arch DCR exceeds each level, against the
@@ -683,6 +718,137 @@ namespace
             << over[1] / area << ", " << over[2] / area << std::endl;
     }
   }
+
+  /// The distance from @p x to the segment [a, b] (the test's own).
+  double
+  to_segment(const Point<dim> &x, const Point<dim> &a, const Point<dim> &b)
+  {
+    const Tensor<1, dim> d = b - a;
+    const double         t = std::min(1., std::max(0., (x - a) * d / d.norm_square()));
+    return (x - (a + t * d)).norm();
+  }
+
+  void
+  bands()
+  {
+    log() << "F. the bands at the base and the joint, and the verdict's limits" << std::endl;
+    const TurnedBlock block(true);
+    const auto [a, c] = arch_and_cantilever_of(block.normal(true));
+    const double sa0  = a * (block.stress(1., 0., Point<dim>()) * a);
+    const double sign = sa0 > 0 ? 1. : -1.; // the upstream arch in tension
+    output::EvaluationParameters ep;
+    ep.evaluate         = true;
+    ep.tensile_strength = std::abs(sa0) / 2.5;
+    ep.base_band        = 2.5;
+    ep.joint_band       = 1.;
+    const double joint_strength = ep.tensile_strength / 4;
+    output::StressEnvelope envelope(*block.space, block.materials, no_temperature, ".", ep,
+                                    [&](const unsigned int k) {
+                                      return k == 0 ? joint_strength : 0.;
+                                    });
+    time::NewmarkState s;
+    block.set(s, 0., 0., 0.);
+    envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
+    block.set(s, 1., sign, 0.);
+    envelope.record(output::StepRecord{s, nullptr, {}, nullptr});
+    // The block before the batter and the turn: the base is the rectangle
+    // [0, 4] x [0, 6] at z = 0, the joint plane y = 3 meets the inclined
+    // faces along (0, 3, 0)-(2, 3, 8) and (4, 3, 0)-(6, 3, 8), the crest
+    // along (2, 3, 8)-(6, 3, 8).
+    const auto back = [](const Point<dim> &x) {
+      return Point<dim>(TurnedBlock::turn(Tensor<1, dim>(x), -M_PI / 6));
+    };
+    const std::vector<std::array<Point<dim>, 2>> base{
+      {Point<dim>(0, 0, 0), Point<dim>(4, 0, 0)}, {Point<dim>(4, 0, 0), Point<dim>(4, 6, 0)},
+      {Point<dim>(4, 6, 0), Point<dim>(0, 6, 0)}, {Point<dim>(0, 6, 0), Point<dim>(0, 0, 0)}};
+    const std::vector<std::array<Point<dim>, 2>> joint{
+      {Point<dim>(0, 3, 0), Point<dim>(2, 3, 8)}, {Point<dim>(4, 3, 0), Point<dim>(6, 3, 8)},
+      {Point<dim>(2, 3, 8), Point<dim>(6, 3, 8)}};
+    const auto nearest = [](const Point<dim> &q, const auto &segments) {
+      double d = HUGE_VAL;
+      for (const auto &[from, to] : segments)
+        d = std::min(d, to_segment(q, from, to));
+      return d;
+    };
+    double       dcr_error = 0., evaluated_area = 0., left_out = 0.;
+    unsigned int wrong = 0, in_joint_band = 0, in_base_band = 0, n = 0;
+    for (const auto &e : envelope.gather())
+      if (e.part == output::StressEnvelope::Part::upstream ||
+          e.part == output::StressEnvelope::Part::downstream)
+        {
+          ++n;
+          const Point<dim> q         = back(e.where);
+          const bool       evaluated = nearest(q, base) >= ep.base_band;
+          const double     capacity =
+            nearest(q, joint) < ep.joint_band ? joint_strength : ep.tensile_strength;
+          in_joint_band += capacity == joint_strength;
+          in_base_band += !evaluated;
+          if (e.part == output::StressEnvelope::Part::upstream)
+            (evaluated ? evaluated_area : left_out) += e.weight;
+          wrong += (e.evaluated != evaluated) + (e.arch_capacity != capacity);
+          const auto [ae, ce] = arch_and_cantilever_of(block.normal_at(e.where));
+          const double sa     = ae * (block.stress(sign, 0., e.where) * ae);
+          dcr_error = std::max(dcr_error, std::abs(e.arch_demand.largest_dcr - std::max(0., sa / capacity)) /
+                                            (std::abs(sa0) / joint_strength));
+        }
+    log() << "  upstream and downstream points " << n << ": in the joint band " << in_joint_band
+          << ", in the base band " << in_base_band << std::endl;
+    log() << "  every point's band from the distances to the closed-form base and joint lines "
+             "(both bands met): "
+          << testing::yes(wrong == 0 && in_joint_band > 0 && in_base_band > 0 &&
+                          in_joint_band + in_base_band < n)
+          << std::endl;
+    check_below("  |arch DCR - sigma_a / (the joint's or the concrete's strength)| / its peak",
+                dcr_error, 1e-9);
+    output::Summary          summary;
+    const ConditionalOStream quiet(std::cout, false);
+    envelope.finish(summary, quiet);
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      summary.write("bands_summary.json");
+    MPI_Barrier(MPI_COMM_WORLD);
+    boost::property_tree::ptree json;
+    boost::property_tree::read_json("bands_summary.json", json);
+    const auto number = [&](const std::string &path) {
+      return json.get<double>(boost::property_tree::ptree::path_type(path, '|'));
+    };
+    check_relative("  the upstream part's evaluated area against its points' weights [m^2]",
+                   number("stress envelope|upstream|evaluated area [m^2]"), evaluated_area, 1e-12);
+    check_relative("  its area left out at the base [m^2]",
+                   number("stress envelope|upstream|area left out at the base [m^2]"), left_out,
+                   1e-12);
+
+    // The verdict's limits on prescribed demands: DCR 2, the curve from
+    // 0.4 s at DCR 1 to 0 at DCR 2 (0.2 s at 1.5), 20 % of the area.
+    output::EvaluationParameters limits;
+    limits.allowed_cid                = 0.4;
+    limits.allowed_overstressed_share = 0.2;
+    struct Case
+    {
+      std::string          what;
+      output::FaceDemand   d;
+      std::string          named; // the limit exceeded, or "" for none
+    };
+    const std::vector<Case> cases{
+      {"all within", {1.9, {0.39, 0.19, 0.}, 0.19}, ""},
+      {"DCR 2.1", {2.1, {0.39, 0.19, 0.}, 0.19}, "largest DCR 2.1 above 2"},
+      {"CID 0.41 s above 1", {1.9, {0.41, 0.19, 0.}, 0.19}, "CID above DCR 1 0.41 s"},
+      {"CID 0.21 s above 1.5", {1.9, {0.39, 0.21, 0.}, 0.19}, "CID above DCR 1.5 0.21 s"},
+      {"share 0.21", {1.9, {0.39, 0.19, 0.}, 0.21}, "overstressed share 0.21"}};
+    bool all_right = true;
+    for (const auto &k : cases)
+      {
+        const auto beyond = output::exceeded_limits(k.d, limits);
+        const bool right  = k.named.empty() ? beyond.empty() :
+                                              beyond.size() == 1 && beyond[0].rfind(k.named, 0) == 0;
+        all_right = all_right && right;
+        if (!right)
+          log() << "  " << k.what << ": got " << beyond.size() << " limits exceeded"
+                << (beyond.empty() ? "" : ", the first: " + beyond[0]) << std::endl;
+      }
+    log() << "  the verdict on five prescribed demands (one limit exceeded in each but the "
+             "first): "
+          << testing::yes(all_right) << std::endl;
+  }
 } // namespace
 
 int
@@ -694,5 +860,6 @@ main(int argc, char **argv)
   arch_dam_with_water();
   arch_and_cantilever();
   demand_capacity();
+  bands();
   return 0;
 }

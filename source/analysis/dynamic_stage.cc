@@ -128,7 +128,9 @@ namespace archdam::analysis
     recorders.push_back(
       std::make_unique<output::StressEnvelope>(model().space(), p.materials,
                                                model().temperature(), directory,
-                                               p.evaluation));
+                                               p.evaluation, [this](const unsigned int k) {
+                                                 return p.joints.law_of(k).tensile_strength;
+                                               }));
     recorders.push_back(std::make_unique<output::FieldWriter>(p.output, model().space(), p.materials,
                                                                  model().temperature()));
   }

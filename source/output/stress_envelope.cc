@@ -1,4 +1,5 @@
 #include <archdam/base/binary_io.h>
+#include <archdam/base/input_error.h>
 #include <archdam/base/on_rank_zero.h>
 #include <archdam/geometry/ids.h>
 #include <archdam/output/atomic_file.h>
@@ -24,7 +25,7 @@ namespace archdam::output
     /// Part, x, y, z, max s1, its time, min s3, its time, the arch's and
     /// the cantilever's extremes, the weight, and the arch's and the
     /// cantilever's largest DCR and durations: gathered as doubles.
-    constexpr unsigned int values_per_entry = 17 + 2 * (1 + n_dcr_levels);
+    constexpr unsigned int values_per_entry = 19 + 2 * (1 + n_dcr_levels);
   } // namespace
 
   void
@@ -58,7 +59,8 @@ namespace archdam::output
                                  const physics::solid::MaterialParameters &materials,
                                  const physics::solid::TemperatureField   &temperature,
                                  const std::string                        &directory,
-                                 const EvaluationParameters               &evaluation)
+                                 const EvaluationParameters               &evaluation,
+                                 const std::function<double(unsigned int)> &joint_tensile_strength)
     : space(space)
     , directory(directory)
     , evaluation(evaluation)
@@ -83,7 +85,27 @@ namespace archdam::output
       }
     // The normals at the face rule's points, in the order of at_face[f]'s.
     FEFaceValues<dim> normals(fe, q, update_normal_vectors | update_JxW_values);
-
+    // The lines where the surface meets the rock and the joints, for the
+    // bands of the evaluation.
+    const std::unique_ptr<const geometry::SurfaceEdges> edges =
+      evaluation.evaluate && (evaluation.base_band > 0. || evaluation.joint_band > 0.) ?
+        std::make_unique<const geometry::SurfaceEdges>(space.dof_handler.get_triangulation()) :
+        nullptr;
+    const auto evaluate_at = [&](Entry &e) {
+      e.arch_capacity = evaluation.tensile_strength;
+      if (!edges)
+        return;
+      e.evaluated = !(edges->to_base(e.where) < evaluation.base_band);
+      if (const auto [joint, d] = edges->nearest_joint(e.where); d < evaluation.joint_band)
+        {
+          e.arch_capacity = joint_tensile_strength ? joint_tensile_strength(joint) : 0.;
+          if (!(e.arch_capacity > 0.))
+            throw InputError("Evaluation/Joint band width measures the arch stress near joint " +
+                             std::to_string(joint) + " against its tensile strength, which is " +
+                             "not positive (Contraction joints/Tensile strength or Per joint): " +
+                             "give it one, or set the band to 0.");
+        }
+    };
 
     for (const auto &cell : space.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && ids::is_dam(cell->material_id()))
@@ -106,6 +128,7 @@ namespace archdam::output
                 {
                   entries.push_back({part, at_face[f]->quadrature_point(k)});
                   entries.back().weight = normals.JxW(k);
+                  evaluate_at(entries.back());
                   inverse_jacobians.push_back(Tensor<2, dim>(at_face[f]->inverse_jacobian(k)));
                   temperature_changes.push_back(
                     temperature.change(cell->material_id(), at_face[f]->quadrature_point(k)));
@@ -144,7 +167,7 @@ namespace archdam::output
             if (evaluation.evaluate)
               {
                 const double dt = started ? t - t_prev : 0.;
-                e.arch_demand.add(sa / evaluation.tensile_strength, dt, evaluation.levels);
+                e.arch_demand.add(sa / e.arch_capacity, dt, evaluation.levels);
                 e.cantilever_demand.add(sc / evaluation.tensile_strength, dt, evaluation.levels);
               }
             if (!started || s1 > e.max_s1)
@@ -174,7 +197,8 @@ namespace archdam::output
                                    e.where[2], e.max_s1, e.time_max_s1, e.min_s3,
                                    e.time_min_s3, e.arch.max, e.arch.time_max, e.arch.min,
                                    e.arch.time_min, e.cantilever.max, e.cantilever.time_max,
-                                   e.cantilever.min, e.cantilever.time_min, e.weight});
+                                   e.cantilever.min, e.cantilever.time_min, e.weight,
+                                   e.arch_capacity, e.evaluated ? 1. : 0.});
         for (const Exceedance *x : {&e.arch_demand, &e.cantilever_demand})
           {
             local.push_back(x->largest_dcr);
@@ -189,7 +213,9 @@ namespace archdam::output
           all.push_back({static_cast<Part>(static_cast<int>(v[0])), Point<dim>(v[1], v[2], v[3]),
                          v[4], v[5], v[6], v[7], {v[8], v[9], v[10], v[11]},
                          {v[12], v[13], v[14], v[15]}, v[16]});
-          v += 17;
+          all.back().arch_capacity = v[17];
+          all.back().evaluated     = v[18] > 0.5;
+          v += 19;
           for (Exceedance *x : {&all.back().arch_demand, &all.back().cantilever_demand})
             {
               x->largest_dcr = *v++;
@@ -205,8 +231,9 @@ namespace archdam::output
   }
 
   void
-  StressEnvelope::finish(Summary &summary, const dealii::ConditionalOStream &)
+  StressEnvelope::finish(Summary &summary, const dealii::ConditionalOStream &screen)
   {
+    std::vector<std::string> beyond; // the verdict's limits exceeded
     const std::vector<Entry> all = gather();
     on_rank_zero(space.comm, [&] {
       write_atomically(directory + "/stress_envelope_dynamic.csv", [&](std::ostream &out) {
@@ -221,6 +248,8 @@ namespace archdam::output
               for (const double level : evaluation.levels)
                 out << "," << what << " CID above DCR " << level << " [s]";
             }
+        if (evaluation.evaluate)
+          out << ",arch capacity [Pa],evaluated";
         out << ",area [m^2]\n" << std::setprecision(10);
         for (const Entry &e : all)
           {
@@ -236,6 +265,8 @@ namespace archdam::output
                   for (const double d : x->duration)
                     out << ',' << d;
                 }
+            if (evaluation.evaluate)
+              out << ',' << e.arch_capacity << ',' << (e.evaluated ? 1 : 0);
             out << ',' << e.weight << '\n';
           }
       });
@@ -288,7 +319,21 @@ namespace archdam::output
                   ((*compression).*of).time_min, compression->where);
           }
         if (evaluation.evaluate)
-          summarize_demand(all, part, key, summary);
+          summarize_demand(all, part, key, summary, beyond);
+      }
+    if (evaluation.judges())
+      {
+        // EM 1110-2-6053's reading of a linear analysis (doc/theory/results.md §3).
+        const std::string verdict =
+          beyond.empty() ? "within the limits of a linear analysis" :
+                           "beyond the limits of a linear analysis: a nonlinear analysis is needed";
+        summary.set("evaluation/verdict", verdict);
+        std::string reasons;
+        for (const std::string &b : beyond)
+          reasons += (reasons.empty() ? "" : "; ") + b;
+        summary.set("evaluation/limits exceeded", reasons);
+        screen << "Evaluation: " << verdict << (beyond.empty() ? "" : " (" + reasons + ")") << "."
+               << std::endl;
       }
     const auto peak = std::max_element(all.begin(), all.end(), [](const Entry &a, const Entry &b) {
       return a.max_s1 < b.max_s1;
@@ -303,14 +348,18 @@ namespace archdam::output
 
   void
   StressEnvelope::summarize_demand(const std::vector<Entry> &all, const Part part,
-                                   const std::string &key, Summary &summary) const
+                                   const std::string &key, Summary &summary,
+                                   std::vector<std::string> &beyond) const
   {
     // Per stress: the largest DCR, the longest CID at each level, and the
-    // share of the part's area whose largest DCR exceeds each level.
-    double area = 0.;
+    // share of the part's evaluated area whose largest DCR exceeds each level
+    // (and 1, for the verdict).
+    double area = 0., left_out = 0.;
     for (const Entry &e : all)
       if (e.part == part)
-        area += e.weight;
+        (e.evaluated ? area : left_out) += e.weight;
+    summary.set(key + "evaluated area [m^2]", area);
+    summary.set(key + "area left out at the base [m^2]", left_out);
     struct Stress
     {
       std::string       what;
@@ -321,28 +370,33 @@ namespace archdam::output
          {Stress{"arch", &Entry::arch_demand, &Entry::arch},
           Stress{"cantilever", &Entry::cantilever_demand, &Entry::cantilever}})
       {
-        double largest = 0.;
-        std::array<double, n_dcr_levels> cid{}, overstressed{};
+        FaceDemand                        d;
+        std::array<double, n_dcr_levels> overstressed{};
+        double                            above_one = 0.;
         for (const Entry &e : all)
-          if (e.part == part)
+          if (e.part == part && e.evaluated)
             {
               const Exceedance &x = e.*of;
-              largest             = std::max(largest, x.largest_dcr);
+              d.largest_dcr       = std::max(d.largest_dcr, x.largest_dcr);
               for (unsigned int i = 0; i < n_dcr_levels; ++i)
                 {
-                  cid[i] = std::max(cid[i], x.duration[i]);
+                  d.longest_cid[i] = std::max(d.longest_cid[i], x.duration[i]);
                   if (x.largest_dcr > evaluation.levels[i])
                     overstressed[i] += e.weight;
                 }
+              if (x.largest_dcr > 1.)
+                above_one += e.weight;
             }
+        d.share_above_one   = area > 0. ? above_one / area : 0.;
         const std::string k = key + what + " DCR/";
-        summary.set(k + "largest", largest);
+        summary.set(k + "largest", d.largest_dcr);
+        summary.set(k + "overstressed share of the area above 1", d.share_above_one);
         if (evaluation.compressive_strength > 0.)
           {
             // The largest compression of this stress on the part.
             double compression = 0.;
             for (const Entry &e : all)
-              if (e.part == part)
+              if (e.part == part && e.evaluated)
                 compression = std::max(compression, -(e.*stress).min);
             summary.set(key + what + " compression to the compressive strength",
                         compression / evaluation.compressive_strength);
@@ -351,10 +405,16 @@ namespace archdam::output
           {
             std::ostringstream level;
             level << evaluation.levels[i];
-            summary.set(k + "above " + level.str() + "/longest CID [s]", cid[i]);
+            summary.set(k + "above " + level.str() + "/longest CID [s]", d.longest_cid[i]);
             summary.set(k + "above " + level.str() + "/overstressed share of the area",
                         area > 0. ? overstressed[i] / area : 0.);
           }
+        if (!evaluation.judges())
+          continue;
+        const auto exceeded = exceeded_limits(d, evaluation);
+        summary.set(k + "verdict", exceeded.empty() ? "within the limits" : "beyond the limits");
+        for (const std::string &x : exceeded)
+          beyond.push_back(geometry::name(part) + " " + what + ": " + x);
       }
   }
 

@@ -152,6 +152,11 @@ namespace archdam
       loads::parse_temperature_table(p.static_loads.temperature_change);
       p.checkpoints.check();
       p.evaluation.check();
+      if (p.evaluation.evaluate && p.evaluation.joint_band > 0. && p.joints.per_joint.empty() &&
+          !(p.joints.law.tensile_strength > 0.))
+        throw InputError("Evaluation/Joint band width measures the arch stress near the joints "
+                         "against their tensile strength, and Contraction joints/Tensile "
+                         "strength is 0: give the joints one, or set the band to 0.");
       p.suite.check();
       // Every record of a suite is there before the first run starts.
       for (const auto &r : p.suite.parse())

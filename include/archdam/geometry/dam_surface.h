@@ -2,10 +2,14 @@
 
 #include <archdam/base/types.h>
 
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 /**
  * The parts of the dam's surface (doc/theory/results.md §3): which faces of
@@ -47,4 +51,40 @@ namespace archdam::geometry
   /// interface with the rock (an interior face) are not.
   bool
   on_dam_surface(dealii::types::boundary_id id);
+
+  /// A straight edge of the mesh, between two vertices.
+  using Segment = std::array<dealii::Point<dim>, 2>;
+
+  /// The distance from @p x to the segment @p s.
+  double
+  distance(const dealii::Point<dim> &x, const Segment &s);
+
+  /**
+   * The lines where the dam's surface meets its base and its contraction
+   * joints (doc/theory/results.md §3): the edges a surface face shares with
+   * another face of its cell that is
+   *  - on the base: an interface with a rock cell, or a truncated base
+   *    (ids 1, 2);
+   *  - on joint k: a joint face of the split mesh (ids 100 + 2k,
+   *    101 + 2k), or, in a mesh whose joints are glued (not split), a face
+   *    between dam blocks k and k + 1.
+   * From every cell of @p tria (a shared triangulation holds all of them on
+   * every process), so each process gets all the lines.
+   */
+  struct SurfaceEdges
+  {
+    std::vector<Segment>                               base;
+    std::vector<std::pair<unsigned int, Segment>>      joints;
+
+    explicit SurfaceEdges(const dealii::Triangulation<dim> &tria);
+
+    /// The distance from @p x to the base's lines (infinity without a base).
+    double
+    to_base(const dealii::Point<dim> &x) const;
+
+    /// The nearest joint line to @p x: its joint and distance (infinity
+    /// without joints).
+    std::pair<unsigned int, double>
+    nearest_joint(const dealii::Point<dim> &x) const;
+  };
 } // namespace archdam::geometry

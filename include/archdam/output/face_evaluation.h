@@ -3,6 +3,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace archdam::output
 {
@@ -26,15 +28,57 @@ namespace archdam::output
     /// 0: no compression check.
     double                            compressive_strength = 0.;
     std::array<double, n_dcr_levels> levels{{1., 1.5, 2.}};
+    /// Points nearer than this to the dam's contact with the rock [m] are
+    /// left out (the contact's stresses are singular and grow with the
+    /// mesh's refinement).
+    double base_band = 0.;
+    /// The arch stress of points nearer than this to a contraction joint's
+    /// line on the face [m] is measured against the joint's own tensile
+    /// strength (Contraction joints/Tensile strength), not the concrete's.
+    double joint_band = 0.;
+    /// The limits of a linear analysis the verdict reads (with
+    /// allowed_cid > 0): the largest DCR, the performance curve's CID at
+    /// DCR 1 [s], falling linearly to 0 at allowed_dcr, and the largest
+    /// share of a face's area above DCR 1.
+    double allowed_dcr                = 2.;
+    double allowed_cid                = 0.;
+    double allowed_overstressed_share = 0.;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
 
     /// InputError for a tensile strength or a level not above zero, or
-    /// levels not increasing, when evaluate is set.
+    /// levels not increasing, when evaluate is set; for a performance curve
+    /// without an area limit, or an allowed DCR not above 1.
     void
     check() const;
+
+    /// Whether the verdict is asked for.
+    bool
+    judges() const
+    {
+      return evaluate && allowed_cid > 0.;
+    }
   };
+
+  /// What the verdict reads of one stress on one face: its largest DCR,
+  /// its longest CID above each of the levels, and the share of the face's
+  /// area whose largest DCR exceeds 1.
+  struct FaceDemand
+  {
+    double                            largest_dcr = 0.;
+    std::array<double, n_dcr_levels> longest_cid{};
+    double                            share_above_one = 0.;
+  };
+
+  /// The limits of @p e that @p d exceeds, one sentence each (none: the
+  /// linear analysis is acceptable for this stress and face): the largest
+  /// DCR against allowed_dcr; at each level L in [1, allowed_dcr] the
+  /// longest CID against the performance curve allowed_cid (allowed_dcr -
+  /// L) / (allowed_dcr - 1); the share above DCR 1 against
+  /// allowed_overstressed_share (doc/theory/results.md §3).
+  std::vector<std::string>
+  exceeded_limits(const FaceDemand &d, const EvaluationParameters &e);
 
   /// One point's demand over the stage for one stress: its largest DCR and,
   /// per level, the cumulative time its DCR exceeded the level.

@@ -11,6 +11,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <array>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -78,6 +79,12 @@ namespace archdam::output
       /// With `Evaluation/Evaluate`: the arch's and the cantilever's DCR and
       /// cumulative inelastic durations (face_evaluation.h).
       Exceedance arch_demand, cantilever_demand;
+      /// The tensile strength the arch's DCR is measured against: the
+      /// concrete's, or a contraction joint's within the joint band.
+      double arch_capacity = 0.;
+      /// Whether the point counts in the evaluation (not in the band left
+      /// out at the base).
+      bool evaluated = true;
     };
 
     /// The arch direction of a face with unit outward normal @p n, its
@@ -89,11 +96,14 @@ namespace archdam::output
     face_directions(const dealii::Tensor<1, dim> &n);
 
     /// With @p evaluation (its Evaluate set), also the demand-capacity
-    /// evaluation of the arch and cantilever stresses. The stress is
-    /// C (eps - alpha dT I) with the dam's temperature change @p temperature.
+    /// evaluation of the arch and cantilever stresses, the arch stress
+    /// within the joint band of joint k against @p joint_tensile_strength(k)
+    /// (InputError if that is not positive). The stress is C (eps - alpha dT
+    /// I) with the dam's temperature change @p temperature.
     StressEnvelope(const fe::FESpace &space, const physics::solid::MaterialParameters &materials,
                    const physics::solid::TemperatureField &temperature,
-                   const std::string &directory, const EvaluationParameters &evaluation = {});
+                   const std::string &directory, const EvaluationParameters &evaluation = {},
+                   const std::function<double(unsigned int)> &joint_tensile_strength = {});
 
     std::string
     name() const override
@@ -132,10 +142,12 @@ namespace archdam::output
       unsigned int                                 first_entry;
     };
 
-    /// The demand-capacity evaluation of @p part into @p summary under @p key.
+    /// The demand-capacity evaluation of @p part into @p summary under @p
+    /// key; with the verdict asked for, the limits exceeded are appended to
+    /// @p beyond.
     void
     summarize_demand(const std::vector<Entry> &all, Part part, const std::string &key,
-                     Summary &summary) const;
+                     Summary &summary, std::vector<std::string> &beyond) const;
 
     const fe::FESpace        &space;
     std::string               directory;
