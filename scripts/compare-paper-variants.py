@@ -16,6 +16,12 @@ again unless --rerun), then draws from whatever results exist:
                            the upstream and downstream faces (reference and
                            glued; scripts/stress_envelope_plot.py)
   comparison.csv           one row per case: the peaks the figures show
+  data/<case>.json         what the figures and comparison.csv read of each
+                           case's run (a few hundred kB, with the version
+                           that ran it): a case without results here is
+                           drawn from it, so the figures can be completed
+                           with cases run at another time (not the stress
+                           envelope maps, which need the run's own file)
 
 Usage (from the project root):
   /usr/bin/python3 scripts/compare-paper-variants.py [--run all|CASE,...|none]
@@ -105,10 +111,16 @@ def read_csv(path):
 
 
 def load(args, case):
-    """The results of a case, or None if it has not been run."""
+    """The results of a case from its result directory, else from the figure
+    data kept beside the figures (store()), or None if it has neither."""
     d = result_dir(args, case)
     if not os.path.exists(os.path.join(d, "summary.json")):
-        return None
+        kept = os.path.join(args.figures, "data", case + ".json")
+        if not os.path.exists(kept):
+            return None
+        r = json.load(open(kept))
+        print(f"{case}: no results in {d}; its figure data from {kept} (run {r['run']})")
+        return r
     r = {"dir": d, "summary": json.load(open(os.path.join(d, "summary.json")))}
     for key, name in [
         ("histories", "histories.csv"),
@@ -118,7 +130,38 @@ def load(args, case):
     ]:
         path = os.path.join(d, name)
         r[key] = read_csv(path) if os.path.exists(path) else None
+    r["faces"] = face_maxima(os.path.join(d, "stress_envelope_dynamic.csv"))
     return r
+
+
+STORED_COLUMNS = {"histories": ["time [s]", "crest.ux [m]", "base.ux [m]", "C.s1 [Pa]"],
+                  "joints": ["time [s]", "A.opening [m]", "B.opening [m]"]}
+
+
+def store(args, case, r):
+    """Keep what the figures and comparison.csv read of a case's run in
+    FIGURES/data/<case>.json (a few hundred kB), so that the figures can be
+    drawn again with cases run at another time (each file says which run)."""
+    if "run" in r:
+        return
+    def columns(table, keep):
+        return {k: v for k, v in table.items() if k in keep} if table else None
+    summary = r["summary"]
+    kept = {
+        "run": f"{summary.get('case', case)}, ArchDam {summary.get('version', 'unknown')}",
+        "summary": {k: summary[k] for k in ["energy balance", "wall time [s]", "dynamic"] if k in summary},
+        "histories": columns(r["histories"], STORED_COLUMNS["histories"]),
+        "joints": columns(r["joints"], STORED_COLUMNS["joints"]),
+        "crest": r["crest"],
+        "envelopes": r["envelopes"],
+        "faces": r["faces"],
+    }
+    kept["summary"]["dynamic"] = {"memory [MB]": summary.get("dynamic", {}).get("memory [MB]", {})}
+    os.makedirs(os.path.join(args.figures, "data"), exist_ok=True)
+    path = os.path.join(args.figures, "data", case + ".json")
+    with open(path, "w") as f:
+        json.dump(kept, f, separators=(",", ":"))
+    print("wrote", path)
 
 
 def crest_deformation(r):
@@ -238,7 +281,8 @@ def draw_all(args, results):
                "maximum opening [mm]", "elevation z [m]", args.mesh)
 
     for c in ["reference", "glued"]:
-        envelope = results.get(c) and os.path.join(results[c]["dir"], "stress_envelope_dynamic.csv")
+        envelope = results.get(c) and "dir" in results[c] and os.path.join(results[c]["dir"],
+                                                                            "stress_envelope_dynamic.csv")
         if envelope and os.path.exists(envelope):
             png = os.path.join(args.figures, f"stress_envelope_{c}.png")
             stress_envelope_plot.draw(envelope, png, f"Largest major principal stress, {LABELS[c]} "
@@ -260,7 +304,7 @@ def draw_all(args, results):
                 continue
             j, h, crest, summary = r["joints"], r["histories"], r["crest"], r["summary"]
             largest = max(range(len(crest["joint"])), key=lambda i: crest["max opening [m]"][i]) if crest else None
-            faces = face_maxima(os.path.join(r["dir"], "stress_envelope_dynamic.csv"))
+            faces = r["faces"]
             memory = summary.get("dynamic", {}).get("memory [MB]", {}).get("peak resident, all processes")
             w.writerow([
                 c,
@@ -299,6 +343,9 @@ def main():
     results = {c: load(args, c) for c in CASES}
     if not any(results.values()):
         sys.exit(f"no results under {args.results} for --mesh {args.mesh}: run some cases first")
+    for c, r in results.items():
+        if r:
+            store(args, c, r)
     draw_all(args, results)
 
 
