@@ -190,6 +190,11 @@ def headline_section(leaves, rows):
             if key in leaves:
                 facts.append([f"{face} face: {quantity.replace('/value', '').replace('/', ' ')}",
                               leaves[key]])
+    if "evaluation/verdict" in leaves:
+        # EM 1110-2-6053's reading of a linear analysis (doc/theory/results.md §3)
+        facts.append(["evaluation: verdict", leaves["evaluation/verdict"]])
+        if leaves.get("evaluation/limits exceeded"):
+            facts.append(["evaluation: limits exceeded", leaves["evaluation/limits exceeded"]])
     for key in ("energy balance/balance error", "joints/steps not converged", "model/dofs",
                 "joints/node pairs", "dynamic/steps"):
         if key in leaves:
