@@ -16,6 +16,12 @@ again unless --rerun), then draws from whatever results exist:
                            the upstream and downstream faces (reference and
                            glued; scripts/stress_envelope_plot.py)
   comparison.csv           one row per case: the peaks the figures show
+  dcr_<stress>_<case>.png  the largest arch and cantilever DCR on the faces
+                           (reference and glued, with Evaluation/Evaluate)
+  evaluation.csv           per case, face and stress: the largest DCR, the
+                           longest CID above each level, the overstressed
+                           share above DCR 1, the areas evaluated and left
+                           out, and the verdict (doc/theory/results.md §3)
   data/<case>.json         what the figures and comparison.csv read of each
                            case's run (a few hundred kB, with the version
                            that ran it): a case without results here is
@@ -149,7 +155,8 @@ def store(args, case, r):
     summary = r["summary"]
     kept = {
         "run": f"{summary.get('case', case)}, ArchDam {summary.get('version', 'unknown')}",
-        "summary": {k: summary[k] for k in ["energy balance", "wall time [s]", "dynamic"] if k in summary},
+        "summary": {k: summary[k] for k in ["energy balance", "wall time [s]", "dynamic",
+                                             "stress envelope", "evaluation"] if k in summary},
         "histories": columns(r["histories"], STORED_COLUMNS["histories"]),
         "joints": columns(r["joints"], STORED_COLUMNS["joints"]),
         "crest": r["crest"],
@@ -289,6 +296,22 @@ def draw_all(args, results):
                                       f"({MESH_NOTES[args.mesh]})")
             print("wrote", png)
 
+    for c in ["reference", "glued"]:
+        envelope = results.get(c) and "dir" in results[c] and os.path.join(results[c]["dir"],
+                                                                            "stress_envelope_dynamic.csv")
+        if not envelope or not os.path.exists(envelope):
+            continue
+        with open(envelope) as f:
+            header = f.readline()
+        for stress in ["arch", "cantilever"]:
+            if f"largest {stress} DCR" in header:
+                png = os.path.join(args.figures, f"dcr_{stress}_{c}.png")
+                stress_envelope_plot.draw(envelope, png, f"Largest {stress} DCR, {LABELS[c]} "
+                                          f"({MESH_NOTES[args.mesh]})", column=f"largest {stress} DCR",
+                                          scale=1.0, value_label=f"largest {stress} DCR")
+                print("wrote", png)
+    write_evaluation(args, results)
+
     path = os.path.join(args.figures, "comparison.csv")
     with open(path, "w") as f:
         w = csv.writer(f)
@@ -320,6 +343,42 @@ def draw_all(args, results):
               + [summary.get("energy balance", {}).get("balance error", ""),
                  sum(summary.get("wall time [s]", {}).values()),
                  1e-3 * memory if memory else ""])
+    print("wrote", path)
+
+
+def write_evaluation(args, results):
+    """evaluation.csv: the demand-capacity evaluation of each case that has one."""
+    rows = []
+    for c in CASES:
+        r = results.get(c)
+        envelope = r and r["summary"].get("stress envelope", {})
+        verdict = r and r["summary"].get("evaluation", {}).get("verdict", "")
+        for face in ["upstream", "downstream"]:
+            part = (envelope or {}).get(face, {})
+            for stress in ["arch", "cantilever"]:
+                d = part.get(f"{stress} DCR")
+                if not d:
+                    continue
+                levels = sorted((k for k in d if k.startswith("above ") and isinstance(d[k], dict)),
+                                key=lambda k: float(k[len("above "):]))
+                rows.append([c, face, stress, d["largest"]]
+                            + [d[k]["longest CID [s]"] for k in levels]
+                            + [d.get("overstressed share of the area above 1", ""),
+                               part.get("evaluated area [m^2]", ""),
+                               part.get("area left out at the base [m^2]", ""),
+                               d.get("verdict", ""), verdict])
+                header = (["case", "face", "stress", "largest DCR"]
+                          + [f"longest CID {k} [s]" for k in levels]
+                          + ["overstressed share above DCR 1", "evaluated area [m^2]",
+                             "area left out at the base [m^2]", "verdict of this stress",
+                             "verdict of the run"])
+    if not rows:
+        return
+    path = os.path.join(args.figures, "evaluation.csv")
+    with open(path, "w") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        w.writerows(rows)
     print("wrote", path)
 
 

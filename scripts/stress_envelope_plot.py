@@ -38,7 +38,9 @@ from matplotlib.ticker import MaxNLocator
 def read(csv_path, column="max s1 [Pa]"):
     """The rows of the file, by face: {face: [(x, y, z, value, t), ...]}, value
     the column named @p column, t its time (that of the column "time of
-    max s1 [s]" for max s1; NaN for a column without one)."""
+    max s1 [s]" for max s1; NaN for a column without one). For a DCR column,
+    only the points the evaluation counts (column "evaluated" 1: not in the
+    band left out at the base)."""
     faces = {}
     with open(csv_path, newline="") as f:
         reader = csv.reader(f)
@@ -48,8 +50,9 @@ def read(csv_path, column="max s1 [Pa]"):
         i = header.index(column)
         time_name = "time of " + column.replace(" [Pa]", "") + " [s]"
         k = header.index(time_name) if time_name in header else None
+        counted = header.index("evaluated") if "DCR" in column and "evaluated" in header else None
         for row in reader:
-            if row:
+            if row and (counted is None or row[counted] == "1"):
                 x, y, z = (float(v) for v in row[1:4])
                 t = float(row[k]) if k is not None else float("nan")
                 faces.setdefault(row[0], []).append((x, y, z, float(row[i]), t))
