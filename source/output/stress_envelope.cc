@@ -91,7 +91,9 @@ namespace archdam::output
       evaluation.evaluate && (evaluation.base_band > 0. || evaluation.joint_band > 0.) ?
         std::make_unique<const geometry::SurfaceEdges>(space.dof_handler.get_triangulation()) :
         nullptr;
-    const auto evaluate_at = [&](Entry &e) {
+    // A joint without tensile strength in the band: 1 + its number (0: none).
+    unsigned int without_strength = 0;
+    const auto   evaluate_at      = [&](Entry &e) {
       e.arch_capacity = evaluation.tensile_strength;
       if (!edges)
         return;
@@ -100,10 +102,7 @@ namespace archdam::output
         {
           e.arch_capacity = joint_tensile_strength ? joint_tensile_strength(joint) : 0.;
           if (!(e.arch_capacity > 0.))
-            throw InputError("Evaluation/Joint band width measures the arch stress near joint " +
-                             std::to_string(joint) + " against its tensile strength, which is " +
-                             "not positive (Contraction joints/Tensile strength or Per joint): " +
-                             "give it one, or set the band to 0.");
+            without_strength = std::max(without_strength, joint + 1);
         }
     };
 
@@ -135,6 +134,13 @@ namespace archdam::output
                   directions.push_back(face_directions(normals.normal_vector(k)));
                 }
             }
+    // Every process stops alike (the joint's points may all be on one).
+    without_strength = Utilities::MPI::max(without_strength, space.comm);
+    if (without_strength > 0)
+      throw InputError("Evaluation/Joint band width measures the arch stress near joint " +
+                       std::to_string(without_strength - 1) + " against its tensile strength, " +
+                       "which is not positive (Contraction joints/Tensile strength or Per joint): " +
+                       "give it one, or set the band to 0.");
     space.reinit_ghosted(ghosted_u);
   }
 
