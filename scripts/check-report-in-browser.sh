@@ -18,7 +18,7 @@ dom=$("$browser" "${flags[@]}" --enable-logging=stderr --v=0 --virtual-time-budg
   --dump-dom "file://$report" 2> "$log")
 console=$(grep "CONSOLE" "$log")
 rm -f "$log"
-counted=$(echo "$dom" | sed -n 's/.*data-figures-loaded="\([0-9]*\) of \([0-9]*\)".*/\1 \2/p' | head -1)
+counted=$(echo "$dom" | sed -n 's/.*data-figures-loaded="\([0-9]*\) of \([0-9]*\)".*/\1 \2/p' | awk 'NR == 1')
 echo "console messages: ${console:-none}"
 if [ -n "$counted" ]; then
   echo "figures the browser decoded: ${counted% *} of ${counted#* }"

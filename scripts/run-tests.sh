@@ -18,7 +18,9 @@ ctest --output-on-failure -j"$(nproc)" | tee ctest.log || status=$?
 # The ten slowest tests of this run (ctest keeps each test's time in its cost
 # data), then ctest's own closing line again, so that it stays the last one.
 echo "The ten slowest tests [s]:"
+# (awk, not head, takes the first ten: it reads sort's output to the end, so
+# that sort never writes into a closed pipe, which pipefail would report.)
 awk '/^---/ { exit } { print }' Testing/Temporary/CTestCostData.txt | sort -k3 -g -r |
-  head -10 | awk '{ printf "  %8.1f  %s\n", $3, $1 }'
+  awk 'NR <= 10 { printf "  %8.1f  %s\n", $3, $1 }'
 grep 'tests passed' ctest.log | tail -1 || true
 exit "$status"
