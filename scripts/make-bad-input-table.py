@@ -22,6 +22,7 @@ TESTS = [
     ("reservoir_errors", "Reservoir"),
     ("foundation_errors", "Foundation"),
     ("checkpoint_resume", "Resuming from a checkpoint (`--resume`)"),
+    ("record_suite", "Record suites as independent jobs (`--record`, `--gather`)"),
     ("motion_command", "`archdam-motion`"),
 ]
 

@@ -63,6 +63,11 @@ main(int argc, char **argv)
   run_archdam("the free-field check of a case on massless rock",
               {"good.prm", "--free-field-check"});
   run_archdam("the free-field check with --resume", {"good.prm", "--free-field-check", "--resume"});
+  run_archdam("--record without a name", {"good.prm", "--record"});
+  run_archdam("--record of a case without a record suite", {"good.prm", "--record", "elcentro"});
+  run_archdam("--gather of a case without a record suite", {"good.prm", "--gather"});
+  run_archdam("--gather with --record", {"good.prm", "--gather", "--record", "elcentro"});
+  run_archdam("--record with --mesh-only", {"good.prm", "--record", "elcentro", "--mesh-only"});
 
   // --help: every option of the usage lines has a line of its own, with an
   // example and where the documentation is; --version: ArchDam's version and
@@ -75,8 +80,8 @@ main(int argc, char **argv)
   const auto [help_code, help] = standard_output({"archdam", "--help"});
   bool every_option = true;
   for (const std::string option :
-       {"--set", "--mesh-only", "--resume", "--free-field-check", "--print-parameters", "--help",
-        "--version"})
+       {"--set", "--mesh-only", "--resume", "--free-field-check", "--record", "--gather",
+        "--print-parameters", "--help", "--version"})
     every_option = every_option && help.find("\n  " + option) != std::string::npos;
   archdam::testing::log() << "* --help\n  exit code " << help_code
                           << "\n  every option on a line of its own: "

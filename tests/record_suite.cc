@@ -22,6 +22,12 @@
 //    matrix's delayed pivots can make even the factors' sizes differ (3.70e6
 //    against 3.66e6 entries in one pair of runs, whose joint 11 then opened
 //    by 2.74e-4 m in both, 6e-9 apart));
+//  - the records as independent jobs: Rinaldi run alone as the suite's
+//    record (--record), the two others' runs copied from the suite's folder,
+//    and the statistics gathered from the three (--gather) give the suite's
+//    own suite.csv (the copied columns identical, the rest as above); an
+//    unknown record, a record not yet run and another record's run in a
+//    record's folder are refused, each with its message;
 //  - the statistics of seven given values (1 to 7): mean 4, sample standard
 //    deviation sqrt(28/6), design value the mean (1e-15);
 //  - the suite's report.html links to the records' own reports;
@@ -35,6 +41,7 @@
 #include <archdam/analysis/simulation.h>
 #include <archdam/loads/response_spectrum.h>
 #include <archdam/application/record_suite.h>
+#include <archdam/base/input_error.h>
 #include <archdam/parameters/parameters.h>
 
 #include "archdam_tests.h"
@@ -43,6 +50,7 @@
 #include <boost/property_tree/ptree.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -130,6 +138,51 @@ main(int argc, char **argv)
     simulation.run();
   }
   MPI_Barrier(MPI_COMM_WORLD);
+
+  // The records as independent jobs (archdam CASE --record NAME, then
+  // --gather): Rinaldi run by itself into jobs/, the two other records'
+  // runs copied there from the suite's folder, then the statistics gathered.
+  // (jobs/ anew: a folder left by an earlier run of the test would hold runs)
+  if (root)
+    std::filesystem::remove_all("jobs");
+  MPI_Barrier(MPI_COMM_WORLD);
+  std::vector<std::string> jobs = overrides;
+  jobs.emplace_back("Output/Directory=jobs");
+  const Parameters p_jobs = read_parameters(case_file, jobs);
+  const auto       suite_run = [&](const application::SuiteRun run, const std::string &only) {
+    try
+      {
+        application::run_record_suite(case_file, jobs, p_jobs, MPI_COMM_WORLD, quiet, run, only);
+        return std::string("no error");
+      }
+    catch (const InputError &e)
+      {
+        return std::string("InputError: ") + e.what();
+      }
+  };
+  log << "* --record of a record the suite does not have\n  "
+      << suite_run(application::SuiteRun::one_record, "kobe") << std::endl;
+  suite_run(application::SuiteRun::one_record, "rinaldi");
+  MPI_Barrier(MPI_COMM_WORLD);
+  const bool rinaldi_only = std::filesystem::exists("jobs/rinaldi/summary.json") &&
+                            !std::filesystem::exists("jobs/elcentro") &&
+                            !std::filesystem::exists("jobs/suite.csv");
+  log << "* --gather before every record has run\n  "
+      << suite_run(application::SuiteRun::gather, "") << std::endl;
+  const auto copy_run = [&](const std::string &from, const std::string &to) {
+    if (root)
+      {
+        std::filesystem::remove_all("jobs/" + to);
+        std::filesystem::copy("suite/" + from, "jobs/" + to);
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+  };
+  copy_run("sylmar", "elcentro");
+  copy_run("sylmar", "sylmar");
+  log << "* --gather with another record's run in a record's folder\n  "
+      << suite_run(application::SuiteRun::gather, "") << std::endl;
+  copy_run("elcentro", "elcentro");
+  const std::string gathered = suite_run(application::SuiteRun::gather, "");
 
   // Scale to target: a suite of the Rinaldi record alone, scaled to the
   // target spectrum of Ground motion/Generated motion (the default, NB
@@ -275,6 +328,28 @@ main(int argc, char **argv)
       << "\nrows whose values and statistics match the summaries: " << n_rows_ok
       << "\nRinaldi alone gives the suite's Rinaldi column: " << n_alone_ok << " of "
       << peaks[0].size() << std::endl;
+
+  // The gathered suite.csv is the whole suite's: the same rows, the
+  // elcentro and sylmar columns identical (the same runs), the rest within
+  // the tolerance of two runs of one case (above).
+  const auto   jobs_rows = read_csv("jobs/suite.csv");
+  unsigned int n_gathered_ok = 0;
+  for (unsigned int i = 1; i < rows.size() && i < jobs_rows.size(); ++i)
+    {
+      bool ok = jobs_rows[i].size() == rows[i].size() && jobs_rows[i][0] == rows[i][0] &&
+                jobs_rows[i][1] == rows[i][1] && jobs_rows[i][3] == rows[i][3];
+      for (unsigned int k = 1; ok && k < rows[i].size(); ++k)
+        {
+          const double a = std::stod(jobs_rows[i][k]), b = std::stod(rows[i][k]);
+          ok = std::abs(a - b) <= std::max(same_run * std::abs(b), 1e-12);
+        }
+      n_gathered_ok += ok;
+    }
+  log << "--record rinaldi ran that record alone (no other record, no statistics): "
+      << testing::yes(rinaldi_only) << "\n--gather of the three runs: " << gathered
+      << "; its suite.csv rows that are the whole suite's: " << n_gathered_ok << " of "
+      << rows.size() - 1 << ", with the same header: "
+      << testing::yes(!jobs_rows.empty() && jobs_rows[0] == rows[0]) << std::endl;
 
   boost::property_tree::ptree suite;
   boost::property_tree::read_json("suite/suite.json", suite);

@@ -30,7 +30,7 @@ namespace archdam
     const char *usage =
       "Usage:\n"
       "  archdam CASE.prm [--set \"Section/Subsection/Name=value\"]... [--mesh-only | --resume |\n"
-      "                   --free-field-check]\n"
+      "                   --free-field-check | --record NAME [--resume] | --gather]\n"
       "  archdam --print-parameters [text|json|xml|latex]\n"
       "  archdam --help | --version\n";
 
@@ -50,6 +50,11 @@ namespace archdam
       "                            its ground motion: the motion at the free surface and\n"
       "                            at the dam's base against the control motion and the\n"
       "                            free field (massed rock), then stop\n"
+      "  --record NAME             of a record suite, run record NAME only (as the\n"
+      "                            whole suite would, scale included): the records as\n"
+      "                            independent jobs\n"
+      "  --gather                  of a record suite, run nothing: write the suite's\n"
+      "                            statistics from its records' finished runs\n"
       "  --print-parameters [FMT]  every parameter with its default, allowed values and\n"
       "                            documentation (FMT: text (default), json, xml, latex)\n"
       "  --help, -h                this text\n"
@@ -106,7 +111,8 @@ namespace archdam
 
       std::string              case_file;
       std::vector<std::string> overrides;
-      bool                     mesh_only = false, resume = false, free_field_check = false;
+      bool        mesh_only = false, resume = false, free_field_check = false, gather = false;
+      std::string record;
       for (unsigned int i = 0; i < args.size(); ++i)
         if (args[i] == "--set")
           {
@@ -122,6 +128,14 @@ namespace archdam
           resume = true;
         else if (args[i] == "--free-field-check")
           free_field_check = true;
+        else if (args[i] == "--record")
+          {
+            if (i + 1 == args.size() || args[i + 1].rfind("-", 0) == 0)
+              throw InputError("--record needs the name of one of the suite's records.");
+            record = args[++i];
+          }
+        else if (args[i] == "--gather")
+          gather = true;
         else if (args[i].rfind("-", 0) == 0)
           throw InputError("Unknown option '" + args[i] + "'.\n" + usage);
         else if (case_file.empty())
@@ -137,18 +151,31 @@ namespace archdam
         throw InputError("--free-field-check runs no analysis: it excludes --mesh-only and "
                          "--resume.");
 
+      const bool suite_option = !record.empty() || gather;
+      if (suite_option && (mesh_only || free_field_check || (gather && !record.empty()) ||
+                           (gather && resume)))
+        throw InputError("--record and --gather each stand alone (--record NAME may add "
+                         "--resume): they exclude each other, --mesh-only and "
+                         "--free-field-check.");
+
       const Parameters p = read_parameters(case_file, overrides);
+      if (suite_option && p.suite.parse().empty())
+        throw InputError(std::string(gather ? "--gather" : "--record") +
+                         " applies to a record suite, and the case has none (Record "
+                         "suite/Records is empty).");
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         for (const auto &w : p.warnings)
           say(warnings, "archdam: warning: ", w);
       const output::RunLock lock(p.output.directory, p.analysis.case_name, MPI_COMM_WORLD);
       if (!p.suite.parse().empty() && !mesh_only && !free_field_check)
         {
-          if (resume)
-            throw InputError("--resume continues one run from its checkpoint; a record suite "
-                             "(Record suite/Records) runs every record anew. Resume one "
-                             "record's run by itself, or run the suite again.");
-          application::run_record_suite(case_file, overrides, p, MPI_COMM_WORLD, out);
+          if (!record.empty())
+            interrupt::catch_signals();
+          application::run_record_suite(case_file, overrides, p, MPI_COMM_WORLD, out,
+                                        gather           ? application::SuiteRun::gather :
+                                        !record.empty() ? application::SuiteRun::one_record :
+                                                          application::SuiteRun::all,
+                                        record, resume);
           return 0;
         }
       analysis::Simulation simulation(p, MPI_COMM_WORLD, out);

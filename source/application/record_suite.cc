@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -131,125 +132,223 @@ namespace archdam::application
     return peaks;
   }
 
+  namespace
+  {
+    /// The overrides that run record @p r of a suite: the record replaces
+    /// the case's motion (scaled by its own scales times @p factor) and
+    /// writes into @p folder/NAME; the record's own run is not a suite.
+    std::vector<std::string>
+    record_overrides(const std::vector<std::string> &overrides,
+                     const std::string              &folder,
+                     const analysis::SuiteRecord              &r,
+                     const double                    factor)
+    {
+      std::vector<std::string> o = overrides;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const std::string component = "Ground motion/Component " + std::string(1, "xyz"[d]) + "/";
+          std::ostringstream scale;
+          scale << std::setprecision(17) << factor * r.scale[d];
+          o.push_back(component + "Source=file");
+          o.push_back(component + "File=" + r.file[d]);
+          o.push_back(component + "Scale factor=" + scale.str());
+        }
+      o.push_back("Output/Directory=" + folder + "/" + r.name);
+      o.push_back("Record suite/Records=");
+      return o;
+    }
+
+    /// The factor that Scale to target gives record @p r (1 without it).
+    double
+    factor_to_target(const std::string              &case_file,
+                     const std::vector<std::string> &overrides,
+                     const Parameters               &p,
+                     const analysis::SuiteRecord              &r)
+    {
+      if (!p.suite.scale_to_target)
+        return 1.;
+      const Parameters as_given =
+        read_parameters(case_file, record_overrides(overrides, p.output.directory, r, 1.));
+      const auto settings =
+        p.ground_motion.generated.settings(0, "Ground motion, Generated motion: ");
+      return scale_to_target(loads::GroundMotion(as_given.ground_motion, as_given.base_directory),
+                             settings.target, settings.damping, p.suite.period_min,
+                             p.suite.period_max);
+    }
+
+    /// InputError unless the run in @p record_parameters' output folder was
+    /// made under that record's motion: its summary.json names the same
+    /// directions, each with the peak acceleration of the record as scaled
+    /// (to 1e-9; the summary keeps 12 digits).
+    void
+    check_record_run(const Parameters &record_parameters, const std::string &name)
+    {
+      const std::string summary_file = record_parameters.output.directory + "/summary.json";
+      if (!std::filesystem::exists(summary_file))
+        throw InputError("Record suite: --gather found no results of record '" + name +
+                         "' (no '" + summary_file + "'). Run it first: archdam CASE.prm "
+                         "--record " + name + ".");
+      boost::property_tree::ptree tree;
+      try
+        {
+          boost::property_tree::read_json(summary_file, tree);
+        }
+      catch (const std::exception &e)
+        {
+          throw InputError("Record suite: the results of record '" + name + "' cannot be read: " +
+                           e.what());
+        }
+      if (!tree.get_child_optional("dynamic"))
+        throw InputError("Record suite: the run of record '" + name + "' in '" +
+                         record_parameters.output.directory +
+                         "' did not finish its dynamic stage (its summary.json has no "
+                         "\"dynamic\" results). Run it again, or resume it with --record " +
+                         name + " --resume.");
+      const loads::GroundMotion motion(record_parameters.ground_motion,
+                                       record_parameters.base_directory);
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const std::string key = std::string("ground motion.") + "xyz"[d] + ".PGA [m/s^2]";
+          const auto        pga = tree.get_optional<double>(key);
+          const bool        same =
+            motion.has_component(d) ?
+              pga && std::abs(*pga - motion.record(d).peak()) <= 1e-9 * motion.record(d).peak() :
+              !pga;
+          if (!same)
+            throw InputError("Record suite: the run in '" + record_parameters.output.directory +
+                             "' was not made under record '" + name + "' as the suite scales it " +
+                             "(its motion in " + std::string(1, "xyz"[d]) + " differs). Run it " +
+                             "again: archdam CASE.prm --record " + name + ".");
+        }
+    }
+
+    /// Write suite.csv and suite.json into @p folder from the records' runs
+    /// in its subfolders (@p factors: each record's factor to the target).
+    void
+    write_suite_statistics(const std::string              &folder,
+                           const std::vector<analysis::SuiteRecord> &records,
+                           const std::vector<double>      &factors,
+                           std::ostream                   &out)
+    {
+      // Every record's peaks, in the order of the first record's summary.
+      std::vector<std::vector<std::pair<std::string, double>>> peaks;
+      for (const auto &r : records)
+        peaks.push_back(run_peaks(folder + "/" + r.name + "/summary.json"));
+      std::ostringstream csv;
+      csv << "quantity";
+      for (const auto &r : records)
+        csv << ',' << r.name;
+      csv << ",mean,largest,standard deviation,mean + 1 sd,design value\n"
+          << std::setprecision(std::numeric_limits<double>::max_digits10);
+      output::Summary summary;
+      summary.set("records", records.size());
+      for (unsigned int k = 0; k < records.size(); ++k)
+        {
+          const auto &r = records[k];
+          for (unsigned int d = 0; d < 3; ++d)
+            if (!r.file[d].empty())
+              {
+                const std::string key = "record/" + r.name + "/" + std::string(1, "xyz"[d]);
+                summary.set(key + "/file", r.file[d]);
+                summary.set(key + "/scale", r.scale[d]);
+              }
+          summary.set("record/" + r.name + "/factor to the target", factors[k]);
+        }
+      summary.set("design value", records.size() >= 7 ? "the mean (seven records or more)" :
+                                                        "the largest (fewer than seven records)");
+      for (unsigned int i = 0; i < peaks[0].size(); ++i)
+        {
+          const std::string  &name = peaks[0][i].first;
+          std::vector<double> values;
+          for (unsigned int k = 0; k < records.size(); ++k)
+            {
+              const auto found = std::find_if(peaks[k].begin(), peaks[k].end(),
+                                              [&](const auto &e) { return e.first == name; });
+              if (found == peaks[k].end())
+                throw InputError("Record suite: the run of record '" + records[k].name +
+                                 "' has no '" + name + "' in its summary.json, the first "
+                                 "record's has.");
+              values.push_back(found->second);
+            }
+          const auto s = suite_statistics(values);
+          csv << name;
+          for (const double v : values)
+            csv << ',' << v;
+          csv << ',' << s.mean << ',' << s.largest << ',' << s.standard_deviation << ','
+              << s.mean_plus_sd << ',' << s.design << '\n';
+          const std::string key = "peaks/" + name + "/";
+          for (unsigned int k = 0; k < records.size(); ++k)
+            summary.set(key + records[k].name, values[k]);
+          summary.set(key + "mean", s.mean);
+          summary.set(key + "largest", s.largest);
+          summary.set(key + "standard deviation", s.standard_deviation);
+          summary.set(key + "mean + 1 sd", s.mean_plus_sd);
+          summary.set(key + "design value", s.design);
+        }
+      output::write_atomically(folder + "/suite.csv", [&](std::ostream &f) { f << csv.str(); });
+      summary.write(folder + "/suite.json");
+      out << "Record suite: " << records.size() << " records; every peak over them in " << folder
+          << "/suite.csv and suite.json (doc/user-guide.md, \"Record suites\")" << std::endl;
+    }
+  } // namespace
+
   void
   run_record_suite(const std::string              &case_file,
                    const std::vector<std::string> &overrides,
                    const Parameters               &p,
                    const MPI_Comm                  comm,
-                   std::ostream                   &out)
+                   std::ostream                   &out,
+                   const SuiteRun                  run,
+                   const std::string              &only,
+                   const bool                      resume)
   {
     const auto         records = p.suite.parse();
     const bool         talk    = Utilities::MPI::this_mpi_process(comm) == 0;
     const std::string &folder  = p.output.directory;
+    if (run == SuiteRun::one_record &&
+        std::none_of(records.begin(), records.end(),
+                     [&](const analysis::SuiteRecord &r) { return r.name == only; }))
+      {
+        std::string names;
+        for (const auto &r : records)
+          names += (names.empty() ? "" : ", ") + r.name;
+        throw InputError("--record " + only + ": the suite (Record suite/Records) has no record '" +
+                         only + "'; its records: " + names + ".");
+      }
+    if (resume && run != SuiteRun::one_record)
+      throw InputError("--resume continues one run from its checkpoint; a record suite "
+                       "(Record suite/Records) runs every record anew. Resume one record's "
+                       "run with --record NAME --resume.");
     std::vector<double> factors;
     for (unsigned int k = 0; k < records.size(); ++k)
       {
         const auto &r = records[k];
-        if (talk)
-          out << "Record suite: record " << k + 1 << " of " << records.size() << ", " << r.name
-              << " (results in " << folder << "/" << r.name << ")" << std::endl;
-        // The record replaces the case's motion (scaled by its own scales
-        // times the factor to the target); the record's own run is not a
-        // suite.
-        const auto with_record = [&](const double factor) {
-          std::vector<std::string> o = overrides;
-          for (unsigned int d = 0; d < 3; ++d)
-            {
-              const std::string component =
-                "Ground motion/Component " + std::string(1, "xyz"[d]) + "/";
-              std::ostringstream scale;
-              scale << std::setprecision(17) << factor * r.scale[d];
-              o.push_back(component + "Source=file");
-              o.push_back(component + "File=" + r.file[d]);
-              o.push_back(component + "Scale factor=" + scale.str());
-            }
-          o.push_back("Output/Directory=" + folder + "/" + r.name);
-          o.push_back("Record suite/Records=");
-          return o;
-        };
-        double factor = 1.;
-        if (p.suite.scale_to_target)
+        factors.push_back(factor_to_target(case_file, overrides, p, r));
+        const Parameters record_parameters =
+          read_parameters(case_file, record_overrides(overrides, folder, r, factors.back()));
+        if (run == SuiteRun::gather)
           {
-            const Parameters as_given = read_parameters(case_file, with_record(1.));
-            const auto       settings =
-              p.ground_motion.generated.settings(0, "Ground motion, Generated motion: ");
-            factor = scale_to_target(loads::GroundMotion(as_given.ground_motion,
-                                                         as_given.base_directory),
-                                     settings.target, settings.damping, p.suite.period_min,
-                                     p.suite.period_max);
-            if (talk)
-              out << "  scaled to the target over " << p.suite.period_min << " to "
-                  << p.suite.period_max << " s by " << factor << std::endl;
+            check_record_run(record_parameters, r.name);
+            continue;
           }
-        factors.push_back(factor);
-        const Parameters     record_parameters = read_parameters(case_file, with_record(factor));
+        if (run == SuiteRun::one_record && r.name != only)
+          continue;
+        if (talk)
+          {
+            out << "Record suite: record " << k + 1 << " of " << records.size() << ", " << r.name
+                << " (results in " << folder << "/" << r.name << ")" << std::endl;
+            if (p.suite.scale_to_target)
+              out << "  scaled to the target over " << p.suite.period_min << " to "
+                  << p.suite.period_max << " s by " << factors.back() << std::endl;
+          }
         analysis::Simulation simulation(record_parameters, comm, out);
-        simulation.run();
+        simulation.run(resume);
         if (talk && p.output.report)
           write_report(folder + "/" + r.name, out);
       }
-    if (!talk)
+    if (!talk || run == SuiteRun::one_record)
       return;
-
-    // Every record's peaks, in the order of the first record's summary.
-    std::vector<std::vector<std::pair<std::string, double>>> peaks;
-    for (const auto &r : records)
-      peaks.push_back(run_peaks(folder + "/" + r.name + "/summary.json"));
-    std::ostringstream csv;
-    csv << "quantity";
-    for (const auto &r : records)
-      csv << ',' << r.name;
-    csv << ",mean,largest,standard deviation,mean + 1 sd,design value\n"
-        << std::setprecision(std::numeric_limits<double>::max_digits10);
-    output::Summary summary;
-    summary.set("records", records.size());
-    for (unsigned int k = 0; k < records.size(); ++k)
-      {
-        const auto &r = records[k];
-        for (unsigned int d = 0; d < 3; ++d)
-          if (!r.file[d].empty())
-            {
-              const std::string key = "record/" + r.name + "/" + std::string(1, "xyz"[d]);
-              summary.set(key + "/file", r.file[d]);
-              summary.set(key + "/scale", r.scale[d]);
-            }
-        summary.set("record/" + r.name + "/factor to the target", factors[k]);
-      }
-    summary.set("design value", records.size() >= 7 ? "the mean (seven records or more)" :
-                                                      "the largest (fewer than seven records)");
-    for (unsigned int i = 0; i < peaks[0].size(); ++i)
-      {
-        const std::string  &name = peaks[0][i].first;
-        std::vector<double> values;
-        for (unsigned int k = 0; k < records.size(); ++k)
-          {
-            const auto found = std::find_if(peaks[k].begin(), peaks[k].end(),
-                                            [&](const auto &e) { return e.first == name; });
-            if (found == peaks[k].end())
-              throw InputError("Record suite: the run of record '" + records[k].name +
-                               "' has no '" + name + "' in its summary.json, the first "
-                               "record's has.");
-            values.push_back(found->second);
-          }
-        const auto s = suite_statistics(values);
-        csv << name;
-        for (const double v : values)
-          csv << ',' << v;
-        csv << ',' << s.mean << ',' << s.largest << ',' << s.standard_deviation << ','
-            << s.mean_plus_sd << ',' << s.design << '\n';
-        const std::string key = "peaks/" + name + "/";
-        for (unsigned int k = 0; k < records.size(); ++k)
-          summary.set(key + records[k].name, values[k]);
-        summary.set(key + "mean", s.mean);
-        summary.set(key + "largest", s.largest);
-        summary.set(key + "standard deviation", s.standard_deviation);
-        summary.set(key + "mean + 1 sd", s.mean_plus_sd);
-        summary.set(key + "design value", s.design);
-      }
-    output::write_atomically(folder + "/suite.csv", [&](std::ostream &f) { f << csv.str(); });
-    summary.write(folder + "/suite.json");
-    out << "Record suite: " << records.size() << " records; every peak over them in " << folder
-        << "/suite.csv and suite.json (doc/user-guide.md, \"Record suites\")" << std::endl;
+    write_suite_statistics(folder, records, factors, out);
     if (p.output.report)
       write_report(folder, out);
   }

@@ -51,13 +51,31 @@ namespace archdam::application
                   double                         period_max,
                   unsigned int                   n = 40);
 
+  /// What run_record_suite() does: run every record, then write the
+  /// statistics; run one record only (as an independent job); or run
+  /// nothing and write the statistics from the records' runs already made.
+  enum class SuiteRun
+  {
+    all,
+    one_record,
+    gather
+  };
+
   /// Run the case @p case_file (with @p overrides; read as @p p) once per
   /// record of p.suite into Output/Directory/NAME, then write suite.csv and
-  /// suite.json there. Collective.
+  /// suite.json there. With SuiteRun::one_record only the record named
+  /// @p only runs (continued from its checkpoint if @p resume), with the
+  /// same scale as in the whole suite, and no statistics are written; with
+  /// SuiteRun::gather nothing runs and the statistics come from the records'
+  /// folders, each checked to hold a finished run under that record's
+  /// motion as the suite scales it. Collective.
   void
   run_record_suite(const std::string              &case_file,
                    const std::vector<std::string> &overrides,
                    const Parameters               &p,
                    MPI_Comm                        comm,
-                   std::ostream                   &out);
+                   std::ostream                   &out,
+                   SuiteRun                        run    = SuiteRun::all,
+                   const std::string              &only   = "",
+                   bool                            resume = false);
 } // namespace archdam::application
