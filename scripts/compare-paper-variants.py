@@ -11,6 +11,11 @@ again unless --rerun), then draws from whatever results exist:
   max_opening_water.png    maximum opening of each joint along the dam axis,
                            compressible / incompressible / Westergaard water
   crest_displacement.png   stream displacement of the crest, every case run
+  max_opening_records.png  maximum opening of each joint at the crest under the
+                           design motion and each record of the suite, with
+                           the suite's design value (the largest)
+  suite.csv                the record suite's statistics (a copy of the one
+                           archdam --gather writes)
   opening_envelopes.png    per joint, the maximum opening over the height
   stress_envelope_<case>.png  largest major principal stress over the run on
                            the upstream and downstream faces (reference and
@@ -55,7 +60,11 @@ import numpy as np  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stress_envelope_plot  # noqa: E402
 
-CASES = ["reference", "glued", "incompressible", "westergaard", "massless", "pacoima"]
+# The records of prm/paper_235m_dam_suite.prm: each is a case of its own here,
+# run as the suite runs it (archdam SUITE.prm --record NAME), and the suite's
+# statistics are gathered once all three have run (--gather).
+RECORDS = ["elcentro", "rinaldi", "sylmar"]
+CASES = ["reference", "glued", "incompressible", "westergaard", "massless", "pacoima"] + RECORDS
 LABELS = {
     "reference": "reference (compressible, joints, massed rock)",
     "glued": "joints glued",
@@ -63,6 +72,9 @@ LABELS = {
     "westergaard": "Westergaard added mass",
     "massless": "massless foundation",
     "pacoima": "Pacoima record",
+    "elcentro": "El Centro 1940 (suite)",
+    "rinaldi": "Rinaldi 1994 (suite)",
+    "sylmar": "Sylmar 1994 (suite)",
 }
 COARSE = [
     "Finite element/Degree=1",
@@ -73,12 +85,40 @@ COARSE = [
 
 
 def prm_file(case):
+    if case in RECORDS:
+        return "prm/paper_235m_dam_suite.prm"
     return "prm/paper_235m_dam.prm" if case == "reference" else f"prm/paper_235m_dam_{case}.prm"
 
 
+def suite_dir(args):
+    return os.path.join(args.results, "paper_235m_dam_suite" + ("_coarse" if args.mesh == "coarse" else ""))
+
+
 def result_dir(args, case):
+    if case in RECORDS:
+        return os.path.join(suite_dir(args), case)
     name = "paper_235m_dam" if case == "reference" else f"paper_235m_dam_{case}"
     return os.path.join(args.results, name + ("_coarse" if args.mesh == "coarse" else ""))
+
+
+def archdam_command(args, case_file, out, more):
+    command = [args.archdam, case_file, "--set", f"Output/Directory={out}"] + more
+    for s in (COARSE if args.mesh == "coarse" else []) + (
+        [f"Time integration/End time={args.end_time}"] if args.end_time else []
+    ):
+        command += ["--set", s]
+    return command
+
+
+def gather_suite(args):
+    """The suite's statistics from its records' runs (archdam --gather), once
+    all of them have run."""
+    if not all(os.path.exists(os.path.join(result_dir(args, r), "summary.json")) for r in RECORDS):
+        return
+    command = archdam_command(args, prm_file(RECORDS[0]), suite_dir(args), ["--gather"])
+    print("suite: gathering", " ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
+    if subprocess.run(command).returncode != 0:
+        sys.exit("suite: archdam --gather failed")
 
 
 def run(args, case):
@@ -86,11 +126,10 @@ def run(args, case):
     if os.path.exists(os.path.join(out, "summary.json")) and not args.rerun:
         print(f"{case}: results in {out} (kept; --rerun to run again)")
         return
-    command = [args.archdam, prm_file(case), "--set", f"Output/Directory={out}"]
-    for s in (COARSE if args.mesh == "coarse" else []) + (
-        [f"Time integration/End time={args.end_time}"] if args.end_time else []
-    ):
-        command += ["--set", s]
+    # A record of the suite runs as the suite runs it, into the suite's
+    # folder's subfolder of its name.
+    command = (archdam_command(args, prm_file(case), suite_dir(args), ["--record", case])
+               if case in RECORDS else archdam_command(args, prm_file(case), out, []))
     print(f"{case}: running", " ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
     os.makedirs(out, exist_ok=True)
     # The run's progress is streamed to the terminal as it comes, and kept
@@ -261,6 +300,29 @@ def draw_all(args, results):
                "Maximum joint opening at the crest along the dam axis",
                "joint (0 = left bank)", "maximum opening [mm]", args.mesh)
 
+    records = [c for c in ["reference"] + RECORDS if results.get(c) and results[c]["crest"]]
+    if any(c in RECORDS for c in records):
+        def along_axis_records(ax):
+            for c in records:
+                crest = results[c]["crest"]
+                ax.plot(crest["joint"], [1e3 * v for v in crest["max opening [m]"]],
+                        "o-" if c in RECORDS else "s--",
+                        label="design motion (reference)" if c == "reference" else LABELS[c])
+            suite = [results[c]["crest"]["max opening [m]"] for c in records if c in RECORDS]
+            if len(suite) == len(RECORDS):
+                ax.plot(results[records[-1]]["crest"]["joint"], [1e3 * max(v) for v in zip(*suite)],
+                        "k-", lw=2, alpha=0.4, label="suite: design value (the largest)")
+            ax.set_xticks(range(13))
+
+        figure(os.path.join(args.figures, "max_opening_records.png"), along_axis_records,
+               "Maximum joint opening at the crest: the design motion and the suite's records",
+               "joint (0 = left bank)", "maximum opening [mm]", args.mesh)
+    suite_csv = os.path.join(suite_dir(args), "suite.csv")
+    if os.path.exists(suite_csv):
+        with open(suite_csv) as f, open(os.path.join(args.figures, "suite.csv"), "w") as g:
+            g.write(f.read())
+        print("wrote", os.path.join(args.figures, "suite.csv"))
+
     crest_cases = [c for c in CASES if results.get(c) and "crest.ux [m]" in results[c]["histories"]]
     if crest_cases:
         def crest(ax):
@@ -399,6 +461,8 @@ def main():
         if c not in CASES:
             sys.exit(f"--run: unknown case '{c}' (known: {', '.join(CASES)})")
         run(args, c)
+    if any(c in RECORDS for c in runs) or not os.path.exists(os.path.join(suite_dir(args), "suite.csv")):
+        gather_suite(args)
     results = {c: load(args, c) for c in CASES}
     if not any(results.values()):
         sys.exit(f"no results under {args.results} for --mesh {args.mesh}: run some cases first")
