@@ -26,8 +26,9 @@
 //    record (--record), the two others' runs copied from the suite's folder,
 //    and the statistics gathered from the three (--gather) give the suite's
 //    own suite.csv (the copied columns identical, the rest as above); an
-//    unknown record, a record not yet run and another record's run in a
-//    record's folder are refused, each with its message;
+//    unknown record, a record not yet run, another record's run in a
+//    record's folder and a record's run under way are refused, each with
+//    its message;
 //  - the statistics of seven given values (1 to 7): mean 4, sample standard
 //    deviation sqrt(28/6), design value the mean (1e-15);
 //  - the suite's report.html links to the records' own reports;
@@ -42,6 +43,7 @@
 #include <archdam/loads/response_spectrum.h>
 #include <archdam/application/record_suite.h>
 #include <archdam/base/input_error.h>
+#include <archdam/output/run_lock.h>
 #include <archdam/parameters/parameters.h>
 
 #include "archdam_tests.h"
@@ -51,6 +53,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <regex>
 #include <fstream>
 #include <sstream>
 
@@ -182,6 +185,16 @@ main(int argc, char **argv)
   log << "* --gather with another record's run in a record's folder\n  "
       << suite_run(application::SuiteRun::gather, "") << std::endl;
   copy_run("elcentro", "elcentro");
+  {
+    // a record's run under way in its folder (here this process holds it,
+    // as a job started elsewhere would)
+    const output::RunLock running("jobs/sylmar", "arch_dam_joints_coarse", MPI_COMM_WORLD);
+    log << "* --gather while a record's run is under way\n  "
+        << std::regex_replace(suite_run(application::SuiteRun::gather, ""),
+                              std::regex(R"(\(process [0-9]+ on [^,]*, started [^)]*\))"),
+                              "(process ..., started ...)")
+        << std::endl;
+  }
   const std::string gathered = suite_run(application::SuiteRun::gather, "");
 
   // Scale to target: a suite of the Rinaldi record alone, scaled to the

@@ -17,6 +17,7 @@
 #include <petscversion.h>
 
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -166,7 +167,13 @@ namespace archdam
       if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
         for (const auto &w : p.warnings)
           say(warnings, "archdam: warning: ", w);
-      const output::RunLock lock(p.output.directory, p.analysis.case_name, MPI_COMM_WORLD);
+      // One run at a time in the output folder; a record's run of a suite
+      // (--record) holds its record's folder (run_record_suite()), so that
+      // the records can run at the same time as independent jobs.
+      const std::optional<output::RunLock> lock =
+        record.empty() ? std::make_optional<output::RunLock>(p.output.directory, p.analysis.case_name,
+                                                             MPI_COMM_WORLD) :
+                         std::nullopt;
       if (!p.suite.parse().empty() && !mesh_only && !free_field_check)
         {
           if (!record.empty())

@@ -3,6 +3,7 @@
 #include <archdam/application/record_suite.h>
 #include <archdam/base/input_error.h>
 #include <archdam/output/atomic_file.h>
+#include <archdam/output/run_lock.h>
 #include <archdam/loads/response_spectrum.h>
 #include <archdam/output/summary.h>
 
@@ -324,15 +325,19 @@ namespace archdam::application
       {
         const auto &r = records[k];
         factors.push_back(factor_to_target(case_file, overrides, p, r));
+        if (run == SuiteRun::one_record && r.name != only)
+          continue;
         const Parameters record_parameters =
           read_parameters(case_file, record_overrides(overrides, folder, r, factors.back()));
+        // The record's folder is one run's at a time: a record running as a
+        // job of its own is neither run again nor gathered before its end.
+        const output::RunLock lock(record_parameters.output.directory,
+                                   record_parameters.analysis.case_name, comm);
         if (run == SuiteRun::gather)
           {
             check_record_run(record_parameters, r.name);
             continue;
           }
-        if (run == SuiteRun::one_record && r.name != only)
-          continue;
         if (talk)
           {
             out << "Record suite: record " << k + 1 << " of " << records.size() << ", " << r.name
