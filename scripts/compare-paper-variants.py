@@ -63,7 +63,7 @@ import stress_envelope_plot  # noqa: E402
 # The records of prm/paper_235m_dam_suite.prm: each is a case of its own here,
 # run as the suite runs it (archdam SUITE.prm --record NAME), and the suite's
 # statistics are gathered once all three have run (--gather).
-RECORDS = ["elcentro", "rinaldi", "sylmar"]
+RECORDS = ["elcentro", "rinaldi", "sanfernando"]
 CASES = ["reference", "glued", "incompressible", "westergaard", "massless", "pacoima"] + RECORDS
 LABELS = {
     "reference": "reference (compressible, joints, massed rock)",
@@ -74,7 +74,7 @@ LABELS = {
     "pacoima": "Pacoima record",
     "elcentro": "El Centro 1940 (suite)",
     "rinaldi": "Rinaldi 1994 (suite)",
-    "sylmar": "Sylmar 1994 (suite)",
+    "sanfernando": "Pacoima Dam 1971 (suite)",
 }
 COARSE = [
     "Finite element/Degree=1",
