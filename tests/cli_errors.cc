@@ -68,6 +68,8 @@ main(int argc, char **argv)
   run_archdam("--gather of a case without a record suite", {"good.prm", "--gather"});
   run_archdam("--gather with --record", {"good.prm", "--gather", "--record", "elcentro"});
   run_archdam("--record with --mesh-only", {"good.prm", "--record", "elcentro", "--mesh-only"});
+  run_archdam("--record given twice", {"good.prm", "--record", "elcentro", "--record", "rinaldi"});
+  run_archdam("--gather with --resume", {"good.prm", "--gather", "--resume"});
 
   // --help: every option of the usage lines has a line of its own, with an
   // example and where the documentation is; --version: ArchDam's version and

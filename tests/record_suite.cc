@@ -27,8 +27,8 @@
 //    and the statistics gathered from the three (--gather) give the suite's
 //    own suite.csv (the copied columns identical, the rest as above); an
 //    unknown record, a record not yet run, another record's run in a
-//    record's folder and a record's run under way are refused, each with
-//    its message;
+//    record's folder, a run that stopped before its end and a record's run
+//    under way are refused, each with its message;
 //  - the statistics of seven given values (1 to 7): mean 4, sample standard
 //    deviation sqrt(28/6), design value the mean (1e-15);
 //  - the suite's report.html links to the records' own reports;
@@ -165,7 +165,8 @@ main(int argc, char **argv)
   };
   log << "* --record of a record the suite does not have\n  "
       << suite_run(application::SuiteRun::one_record, "kobe") << std::endl;
-  suite_run(application::SuiteRun::one_record, "rinaldi");
+  log << "--record rinaldi: " << suite_run(application::SuiteRun::one_record, "rinaldi")
+      << std::endl;
   MPI_Barrier(MPI_COMM_WORLD);
   const bool rinaldi_only = std::filesystem::exists("jobs/rinaldi/summary.json") &&
                             !std::filesystem::exists("jobs/elcentro") &&
@@ -183,6 +184,18 @@ main(int argc, char **argv)
   copy_run("sylmar", "elcentro");
   copy_run("sylmar", "sylmar");
   log << "* --gather with another record's run in a record's folder\n  "
+      << suite_run(application::SuiteRun::gather, "") << std::endl;
+  copy_run("elcentro", "elcentro");
+  // a record's run that stopped before its end (its summary says why)
+  if (root)
+    {
+      boost::property_tree::ptree stopped;
+      boost::property_tree::read_json("jobs/elcentro/summary.json", stopped);
+      stopped.put("stopped.reason", "interrupted (a signal) at t = 0.1 s");
+      boost::property_tree::write_json("jobs/elcentro/summary.json", stopped);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  log << "* --gather with a record's run that stopped before its end\n  "
       << suite_run(application::SuiteRun::gather, "") << std::endl;
   copy_run("elcentro", "elcentro");
   {

@@ -131,8 +131,11 @@ namespace archdam
           free_field_check = true;
         else if (args[i] == "--record")
           {
-            if (i + 1 == args.size() || args[i + 1].rfind("-", 0) == 0)
+            if (i + 1 == args.size() || args[i + 1].empty() || args[i + 1].rfind("-", 0) == 0)
               throw InputError("--record needs the name of one of the suite's records.");
+            if (!record.empty())
+              throw InputError("--record runs one record; got '" + record + "' and '" +
+                               args[i + 1] + "' (start one job per record).");
             record = args[++i];
           }
         else if (args[i] == "--gather")
@@ -153,10 +156,15 @@ namespace archdam
                          "--resume.");
 
       const bool suite_option = !record.empty() || gather;
-      if (suite_option && (mesh_only || free_field_check || (gather && !record.empty()) ||
-                           (gather && resume)))
-        throw InputError("--record and --gather each stand alone (--record NAME may add "
-                         "--resume): they exclude each other, --mesh-only and "
+      if (gather && !record.empty())
+        throw InputError("--gather and --record exclude each other: run the records (--record "
+                         "NAME, a job each), then gather them (--gather).");
+      if (gather && resume)
+        throw InputError("--gather runs nothing, so there is nothing to resume: continue a "
+                         "record's run with --record NAME --resume.");
+      if (suite_option && (mesh_only || free_field_check))
+        throw InputError(std::string(gather ? "--gather" : "--record") +
+                         " runs or gathers a suite's records: it excludes --mesh-only and "
                          "--free-field-check.");
 
       const Parameters p = read_parameters(case_file, overrides);

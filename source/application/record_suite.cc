@@ -2,6 +2,7 @@
 #include <archdam/application/python_script.h>
 #include <archdam/application/record_suite.h>
 #include <archdam/base/input_error.h>
+#include <archdam/base/on_rank_zero.h>
 #include <archdam/output/atomic_file.h>
 #include <archdam/output/run_lock.h>
 #include <archdam/loads/response_spectrum.h>
@@ -16,6 +17,7 @@
 #include <functional>
 #include <iomanip>
 #include <limits>
+#include <memory>
 #include <ostream>
 #include <sstream>
 
@@ -177,18 +179,21 @@ namespace archdam::application
                              p.suite.period_max);
     }
 
-    /// InputError unless the run in @p record_parameters' output folder was
-    /// made under that record's motion: its summary.json names the same
-    /// directions, each with the peak acceleration of the record as scaled
-    /// (to 1e-9; the summary keeps 12 digits).
+    /// InputError unless the run in @p record_parameters' output folder is
+    /// record @p name's finished run: its summary.json has the dynamic
+    /// stage's results, no "stopped" (a run interrupted or diverged), and
+    /// names the same directions as the record, each with the peak
+    /// acceleration of the record as the suite scales it (to 1e-9; the
+    /// summary keeps 12 digits).
     void
-    check_record_run(const Parameters &record_parameters, const std::string &name)
+    check_record_run(const Parameters  &record_parameters,
+                     const std::string &name,
+                     const std::string &case_file)
     {
-      const std::string summary_file = record_parameters.output.directory + "/summary.json";
-      if (!std::filesystem::exists(summary_file))
-        throw InputError("Record suite: --gather found no results of record '" + name +
-                         "' (no '" + summary_file + "'). Run it first: archdam CASE.prm "
-                         "--record " + name + ".");
+      const std::string &folder       = record_parameters.output.directory;
+      const std::string  summary_file = folder + "/summary.json";
+      const std::string  again =
+        "archdam " + std::filesystem::path(case_file).filename().string() + " --record " + name;
       boost::property_tree::ptree tree;
       try
         {
@@ -199,27 +204,35 @@ namespace archdam::application
           throw InputError("Record suite: the results of record '" + name + "' cannot be read: " +
                            e.what());
         }
+      if (const auto reason = tree.get_optional<std::string>("stopped.reason"))
+        throw InputError("Record suite: the run of record '" + name + "' in '" + folder +
+                         "' stopped before its end (" + *reason + "). Continue it: " + again +
+                         " --resume.");
       if (!tree.get_child_optional("dynamic"))
-        throw InputError("Record suite: the run of record '" + name + "' in '" +
-                         record_parameters.output.directory +
-                         "' did not finish its dynamic stage (its summary.json has no "
-                         "\"dynamic\" results). Run it again, or resume it with --record " +
-                         name + " --resume.");
+        throw InputError("Record suite: the run of record '" + name + "' in '" + folder +
+                         "' did not end (its summary.json has no \"dynamic\" results): run "
+                         "it, " + again + ", or continue it from its checkpoint, " + again +
+                         " --resume.");
       const loads::GroundMotion motion(record_parameters.ground_motion,
                                        record_parameters.base_directory);
       for (unsigned int d = 0; d < 3; ++d)
         {
           const std::string key = std::string("ground motion.") + "xyz"[d] + ".PGA [m/s^2]";
           const auto        pga = tree.get_optional<double>(key);
-          const bool        same =
-            motion.has_component(d) ?
-              pga && std::abs(*pga - motion.record(d).peak()) <= 1e-9 * motion.record(d).peak() :
-              !pga;
-          if (!same)
-            throw InputError("Record suite: the run in '" + record_parameters.output.directory +
-                             "' was not made under record '" + name + "' as the suite scales it " +
-                             "(its motion in " + std::string(1, "xyz"[d]) + " differs). Run it " +
-                             "again: archdam CASE.prm --record " + name + ".");
+          const double expected = motion.has_component(d) ? motion.record(d).peak() : 0.;
+          if (pga.value_or(0.) == expected ||
+              (pga && std::abs(*pga - expected) <= 1e-9 * expected))
+            continue;
+          std::ostringstream what;
+          what << std::setprecision(6) << "Record suite: the run in '" << folder
+               << "' was not made under record '" << name << "' as the suite scales it (its "
+               << "peak acceleration in " << "xyz"[d] << ": "
+               << (pga ? std::to_string(*pga) + " m/s^2" : std::string("no motion"))
+               << ", the record's: "
+               << (motion.has_component(d) ? std::to_string(expected) + " m/s^2" :
+                                             std::string("no motion"))
+               << "). Run it again: " << again << ".";
+          throw InputError(what.str());
         }
     }
 
@@ -321,27 +334,48 @@ namespace archdam::application
                        "(Record suite/Records) runs every record anew. Resume one record's "
                        "run with --record NAME --resume.");
     std::vector<double> factors;
+    // --gather holds every record's folder until the statistics are written,
+    // so that no record's run replaces its results in between.
+    std::vector<std::unique_ptr<output::RunLock>> gathered;
     for (unsigned int k = 0; k < records.size(); ++k)
       {
         const auto &r = records[k];
-        factors.push_back(factor_to_target(case_file, overrides, p, r));
         if (run == SuiteRun::one_record && r.name != only)
           continue;
+        factors.push_back(factor_to_target(case_file, overrides, p, r));
         const Parameters record_parameters =
           read_parameters(case_file, record_overrides(overrides, folder, r, factors.back()));
-        // The record's folder is one run's at a time: a record running as a
-        // job of its own is neither run again nor gathered before its end.
-        const output::RunLock lock(record_parameters.output.directory,
-                                   record_parameters.analysis.case_name, comm);
+        const std::string &record_folder = record_parameters.output.directory;
         if (run == SuiteRun::gather)
           {
-            check_record_run(record_parameters, r.name);
+            on_rank_zero(comm, [&]() {
+              if (!std::filesystem::exists(record_folder + "/summary.json"))
+                throw InputError("Record suite: --gather found no results of record '" + r.name +
+                                 "' (no '" + record_folder + "/summary.json'). Run it first: archdam " +
+                                 std::filesystem::path(case_file).filename().string() +
+                                 " --record " + r.name + ".");
+            });
+            try
+              {
+                gathered.push_back(std::make_unique<output::RunLock>(
+                  record_folder, record_parameters.analysis.case_name, comm));
+              }
+            catch (const InputError &e)
+              {
+                throw InputError("Record suite: --gather: the run of record '" + r.name +
+                                 "' is still under way; gather once it has ended. (" + e.what() +
+                                 ")");
+              }
+            on_rank_zero(comm, [&]() { check_record_run(record_parameters, r.name, case_file); });
             continue;
           }
+        // The record's folder is one run's at a time: a record running as a
+        // job of its own is neither run again nor gathered before its end.
+        const output::RunLock lock(record_folder, record_parameters.analysis.case_name, comm);
         if (talk)
           {
             out << "Record suite: record " << k + 1 << " of " << records.size() << ", " << r.name
-                << " (results in " << folder << "/" << r.name << ")" << std::endl;
+                << " (results in " << record_folder << ")" << std::endl;
             if (p.suite.scale_to_target)
               out << "  scaled to the target over " << p.suite.period_min << " to "
                   << p.suite.period_max << " s by " << factors.back() << std::endl;
@@ -349,12 +383,14 @@ namespace archdam::application
         analysis::Simulation simulation(record_parameters, comm, out);
         simulation.run(resume);
         if (talk && p.output.report)
-          write_report(folder + "/" + r.name, out);
+          write_report(record_folder, out);
       }
-    if (!talk || run == SuiteRun::one_record)
+    if (run == SuiteRun::one_record)
       return;
-    write_suite_statistics(folder, records, factors, out);
-    if (p.output.report)
-      write_report(folder, out);
+    on_rank_zero(comm, [&]() {
+      write_suite_statistics(folder, records, factors, out);
+      if (p.output.report)
+        write_report(folder, out);
+    });
   }
 } // namespace archdam::application
