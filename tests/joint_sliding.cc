@@ -167,13 +167,14 @@ main(int argc, char **argv)
   //    slowly, the stick/slip transitions inside a step leave a residual of
   //    their own).
   //  - Step impulse, Beta1 = 1/2, dissipative closure (the default): below
-  //    1 % at both steps (measured 0.78 % and 0.72 %): a pair that sticks
-  //    holds its position, so in the step where the block stops and turns
-  //    the force that would hold it includes the reversal of its velocity,
-  //    and the block turns with an error of its velocity that does not fall
-  //    with the step at these steps (doc/theory/joints.md §11; a one-mass
-  //    model of the same rule gives 0.84 %, 0.70 %, 0.11 % and 0.13 % at 1,
-  //    0.5, 0.25 and 0.125 ms).
+  //    1 % at both steps (measured 0.78 % and 0.72 %): where the block
+  //    turns inside a step, the step's one force lies against its net
+  //    increment or holds its position, and the block leaves the turn with
+  //    an error of its velocity; first order on average, the error depends
+  //    on where the turn falls in the step, so 1 % holds at these two
+  //    steps, not at every step (doc/theory/joints.md §11;
+  //    scripts/one-mass-closures.py: 0.84 % and 0.70 % at these steps, up
+  //    to 1.8 % at steps of 1 to 1.5 ms).
   //  - Trapezoidal forces, Beta1 = 0.6: first order, the error (Beta1 - 1/2)
   //    dt times the jumps of the acceleration at the stick/slip transitions:
   //    halving dt must halve the error (ratio >= 1.7 checked; first order
