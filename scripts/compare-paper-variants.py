@@ -125,18 +125,29 @@ def gather_suite(args):
 
 def run(args, case):
     out = result_dir(args, case)
-    if os.path.exists(os.path.join(out, "summary.json")) and not args.rerun:
-        print(f"{case}: results in {out} (kept; --rerun to run again)")
+    # --resume continues a run that stopped (interrupted, or killed) from
+    # its checkpoint, with the same case and settings (archdam --resume).
+    summary = os.path.join(out, "summary.json")
+    state = json.load(open(summary)) if os.path.exists(summary) else None
+    finished = state is not None and "stopped" not in state and "dynamic" in state
+    checkpoint = os.path.exists(os.path.join(out, "checkpoint", "manifest.txt"))
+    resume = args.resume and not finished and checkpoint
+    if state is not None and not args.rerun and not resume:
+        print(f"{case}: results in {out} (kept; --rerun to run again" +
+              ("" if finished or not checkpoint else
+               "; it stopped before its end: --resume continues it") + ")")
         return
     # A record of the suite runs as the suite runs it, into the suite's
     # folder's subfolder of its name.
-    command = (archdam_command(args, prm_file(case), suite_dir(args), ["--record", case])
-               if case in RECORDS else archdam_command(args, prm_file(case), out, []))
-    print(f"{case}: running", " ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
+    more = ["--resume"] if resume else []
+    command = (archdam_command(args, prm_file(case), suite_dir(args), ["--record", case] + more)
+               if case in RECORDS else archdam_command(args, prm_file(case), out, more))
+    print(f"{case}: {'continuing' if resume else 'running'}",
+          " ".join(f'"{c}"' if " " in c else c for c in command), flush=True)
     os.makedirs(out, exist_ok=True)
     # The run's progress is streamed to the terminal as it comes, and kept
-    # in run.log beside the results.
-    with open(os.path.join(out, "run.log"), "w") as log:
+    # in run.log beside the results (a continued run's after the first part's).
+    with open(os.path.join(out, "run.log"), "a" if resume else "w") as log:
         process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                    text=True, bufsize=1)
         for line in process.stdout:
@@ -460,6 +471,8 @@ def main():
     p.add_argument("--figures", default=None, help="default: RESULTS/figures[_coarse]")
     p.add_argument("--archdam", default="build/archdam")
     p.add_argument("--rerun", action="store_true")
+    p.add_argument("--resume", action="store_true",
+                   help="continue each case that has a checkpoint from it (archdam --resume)")
     args = p.parse_args()
     if args.figures is None:
         args.figures = os.path.join(args.results, "figures" + ("_coarse" if args.mesh == "coarse" else ""))
