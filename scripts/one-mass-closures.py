@@ -24,7 +24,22 @@ the slip while it slides. Three solutions:
                until it vanishes and against the new slip after;
   split, rest  split, and a held step ends at rest (v1 = 0: the position
                held, the velocity that holding it would reverse taken out,
-               a loss of kinetic energy).
+               a loss of kinetic energy);
+  turn first   one force per step as the program's step has it (the
+               position by the trapezoidal rule, s1 = s + dt/2 (v + v1)),
+               the turn tested before the held branch: a step in which the
+               sliding mass turns takes the turn's impulse, the friction
+               against v for theta dt and against the new slip after, its
+               mean mu g (1 - 2 theta) against v; otherwise dissipative;
+  turn if loss turn first, but the turn's impulse only where its work in
+               the step, f (s1 - s), is a loss (else dissipative), and a
+               held step ends at rest.
+
+For the last two it also prints the friction's positive work in the steps
+(the sum of f (s1 - s) where it is positive, per unit mass, as a share of
+the friction's whole loss over the run, the sum of -f (s1 - s)), the
+energy that one force per step can create at a turn: the turn's impulse
+is exact, its work with the trapezoidal position is not.
 
 It prints, for each rule, the largest |s - reference| over the run as a
 share of the peak slip, at 1, 0.5 and 0.25 ms (the test's steps are the
@@ -69,16 +84,38 @@ def reference(dt):
     return out
 
 
+def turn(s, v, a, dt):
+    """The turning step's impulse with the trapezoidal position, or None
+    when the sliding mass does not turn in the step: (s1, v1, f)."""
+    if v == 0.0 or abs(a) <= MU * G:
+        return None
+    sign = math.copysign(1, v)
+    if (v + dt * (a - MU * G * sign)) * v >= 0:
+        return None
+    theta = -v / (a - MU * G * sign) / dt
+    f = MU * G * sign * (1 - 2 * theta)
+    v1 = v + dt * (a + f)
+    return s + 0.5 * dt * (v + v1), v1, f
+
+
 def stepped(dt, rule):
     s, v, t, out = 0.0, 0.0, 0.0, [0.0]
+    stepped.positive_work, stepped.loss = 0.0, 0.0
     for _ in range(round(END / dt)):
         a = -0.5 * (ground(t) + ground(t + dt))
+        turned = turn(s, v, a, dt) if rule.startswith("turn") else None
+        if turned and (rule == "turn first" or turned[2] * (turned[0] - s) <= 0):
+            s1, v1, f = turned
+            step_work(f, s1 - s)
+            s, v, t = s1, v1, t + dt
+            out.append(s)
+            continue
         held_v = 0.0 if rule == "velocities" else -v
         f = (held_v - v) / dt - a  # the force that sticks
         if abs(f) <= MU * G:
             v1 = held_v
             s1 = s + 0.5 * dt * (v + v1)
-            if rule == "split, rest":
+            if rule in ("split, rest", "turn if loss"):
                 v1 = 0.0
         elif rule.startswith("split") and v != 0.0 and abs(a) > MU * G and \
                 (v + dt * (a - MU * G * math.copysign(1, v))) * v < 0:
@@ -95,9 +132,16 @@ def stepped(dt, rule):
                 if along * sign > 0:
                     break
             s1 = s + 0.5 * dt * (v + v1)
+            step_work(-MU * G * sign, s1 - s)
         s, v, t = s1, v1, t + dt
         out.append(s)
     return out
+
+
+def step_work(f, ds):
+    """Books the friction's work f ds of a step (turn rules)."""
+    stepped.positive_work += max(0.0, f * ds)
+    stepped.loss += max(0.0, -f * ds)
 
 
 def error(dt, rule):
@@ -114,6 +158,16 @@ def main():
             print(f"  dt = {dt * 1e3:5.3f} ms: {100 * e[0]:.2f} %;"
                   f" over [dt, 1.5 dt): mean {100 * statistics.mean(e):.2f} %,"
                   f" largest {100 * max(e):.2f} %")
+    for rule in ("turn first", "turn if loss"):
+        print(f"{rule}: max |s - reference| / peak slip; the friction's positive work")
+        for dt in (1e-3, 5e-4, 2.5e-4):
+            e, w = [], []
+            for k in range(8):
+                e.append(error(dt * (1 + k / 16), rule)[0])
+                w.append(stepped.positive_work / stepped.loss)
+            print(f"  dt = {dt * 1e3:5.3f} ms: {100 * e[0]:.2f} %;"
+                  f" over [dt, 1.5 dt): mean {100 * statistics.mean(e):.2f} %,"
+                  f" largest {100 * max(e):.2f} %; positive work at most {max(w):.1e} of the loss")
     print("split: max |s - reference| / peak slip")
     for dt in (1e-3, 5e-4):
         print(f"  dt = {dt * 1e3:5.3f} ms: {100 * error(dt, 'split')[0]:.2f} %")
