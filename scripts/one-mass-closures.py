@@ -84,15 +84,25 @@ def reference(dt):
     return out
 
 
-def turn(s, v, a, dt):
-    """The turning step's impulse with the trapezoidal position, or None
-    when the sliding mass does not turn in the step: (s1, v1, f)."""
+def turning(v, a, dt):
+    """(sign of v, theta) when the sliding mass turns in the step (its
+    velocity would change sign under the friction against it while
+    |a| > mu g), the friction against v for theta dt; else None."""
     if v == 0.0 or abs(a) <= MU * G:
         return None
     sign = math.copysign(1, v)
     if (v + dt * (a - MU * G * sign)) * v >= 0:
         return None
-    theta = -v / (a - MU * G * sign) / dt
+    return sign, -v / (a - MU * G * sign) / dt
+
+
+def turn(s, v, a, dt):
+    """The turning step's impulse with the trapezoidal position, or None
+    when the sliding mass does not turn in the step: (s1, v1, f)."""
+    turns = turning(v, a, dt)
+    if turns is None:
+        return None
+    sign, theta = turns
     f = MU * G * sign * (1 - 2 * theta)
     v1 = v + dt * (a + f)
     return s + 0.5 * dt * (v + v1), v1, f
@@ -117,12 +127,10 @@ def stepped(dt, rule):
             s1 = s + 0.5 * dt * (v + v1)
             if rule in ("split, rest", "turn if loss"):
                 v1 = 0.0
-        elif rule.startswith("split") and v != 0.0 and abs(a) > MU * G and \
-                (v + dt * (a - MU * G * math.copysign(1, v))) * v < 0:
+        elif rule.startswith("split") and turning(v, a, dt):
             # the mass turns: the friction against v until it vanishes
             # (theta dt), then against the new slip
-            sign = math.copysign(1, v)
-            theta = -v / (a - MU * G * sign) / dt
+            sign, theta = turning(v, a, dt)
             v1 = (1 - theta) * dt * (a + MU * G * sign)
             s1 = s + 0.5 * v * theta * dt + 0.5 * v1 * (1 - theta) * dt
         else:
