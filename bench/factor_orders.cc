@@ -33,8 +33,17 @@
 // full-rank factor's, in the same scale as the error (the accuracy a step
 // would lose).
 //
+// Then the factor in single precision against double (time::FactorPrecision,
+// `Time integration/Factor precision`) at each dropping tolerance of
+// --single (default 0, 1e-8, 1e-6; 0 is full rank): the same columns, the
+// error of each, and that of the single-precision factor after one step of
+// iterative refinement in double.
+//
 //   bench_factor_orders [CASE.prm] [--set "Section/Parameter=value"]...
 //                       [--rounds R] [--solves N] [--low-rank TOL,TOL,...]
+//                       [--single TOL,TOL,...] [--precision-only TOL,TOL,...]
+//
+// --precision-only measures the precisions alone, at the tolerances given.
 //
 // Defaults: the reference case, --rounds 1 (each factorization takes about
 // a minute there), --solves 5. Rounds alternate the orders, one
@@ -65,6 +74,7 @@ namespace
   {
     double factorization = 0., elimination = 0., substitution = 0., error = 0.;
     double resident = 0.; ///< the process's resident memory with the factor alive [GB]
+    double refined  = 0.; ///< the error after one step of iterative refinement
     time::CondensedFactorization::Statistics statistics;
   };
 
@@ -105,21 +115,32 @@ namespace
 
   /// Factorize A in @p ordering (block low-rank if @p low_rank > 0), solve
   /// @p solves times; the solution into @p x.
+  /// In @p precision; also the error after one step of iterative
+  /// refinement in double, x + A~^{-1} (b - A x), into r.refined.
   Result
   measure(const SparseMatrix &A, const std::vector<dealii::types::global_dof_index> &interface,
           const Ordering ordering, const Vector &b, const Vector &x_exact,
-          const unsigned int solves, Vector &x, const double low_rank = 0.)
+          const unsigned int solves, Vector &x, const double low_rank = 0.,
+          const time::FactorPrecision precision = time::FactorPrecision::double_precision)
   {
     Result        r;
     dealii::Timer timer;
     // The effective matrix of the coupled system is indefinite: LDL^T, as
     // the integrator factorizes it.
-    const time::CondensedFactorization factor(A, false, interface, ordering, low_rank);
+    const time::CondensedFactorization factor(A, false, interface, ordering, low_rank,
+                                              precision);
     r.factorization = timer.wall_time();
     r.statistics    = factor.statistics();
     r.resident      = bench::memory_gb("VmRSS");
     solve(factor, b, solves, x, r);
     r.error = scaled_error(A, x, x_exact);
+    Vector residual(b), refined(b);
+    A.vmult(residual, x);
+    residual.sadd(-1., 1., b);
+    Result once;
+    solve(factor, residual, 1, refined, once);
+    refined += x;
+    r.refined = scaled_error(A, refined, x_exact);
     return r;
   }
 
@@ -175,7 +196,8 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   unsigned int        rounds = 1, solves = 5;
-  std::vector<double> low_rank = {1e-10, 1e-8, 1e-6, 1e-4};
+  std::vector<double> low_rank = {1e-10, 1e-8, 1e-6, 1e-4}, single = {0., 1e-8, 1e-6};
+  bool                orders = true; // the orders' and the products' tables
   const auto [file, overrides] = bench::case_arguments(
     argc, argv, "prm/paper_235m_dam.prm", [&](const std::string &a, int &i) {
       if (a == "--rounds")
@@ -184,6 +206,14 @@ main(int argc, char **argv)
         solves = std::stoi(argv[++i]);
       else if (a == "--low-rank")
         low_rank = tolerances(argv[++i]);
+      else if (a == "--single")
+        single = tolerances(argv[++i]);
+      else if (a == "--precision-only")
+        {
+          orders = false;
+          low_rank.clear();
+          single = tolerances(argv[++i]);
+        }
       else
         return false;
       return true;
@@ -224,69 +254,72 @@ main(int argc, char **argv)
   model.space().constraints.set_zero(x_exact);
   A.vmult(b, x_exact);
 
-  const std::vector<std::pair<Ordering, std::string>> orders = {
-    {Ordering::nested_dissection, "nested dissection (METIS)"},
-    {Ordering::pord, "PORD"},
-    {Ordering::scotch, "nested dissection (SCOTCH)"}};
-  std::vector<std::vector<Result>> results(orders.size());
-  Vector                           x(b);
-  for (unsigned int r = 0; r < rounds; ++r)
-    for (unsigned int o = 0; o < orders.size(); ++o)
-      results[o].push_back(measure(A, interface, orders[o].first, b, x_exact, solves, x));
-
-  out << "\nper order, means over " << rounds << " round(s), " << solves
-      << " solves each; peak resident memory of the process " << std::setprecision(3)
-      << bench::memory_gb("VmHWM") << " GB\n";
-  table_header(out, "order");
-  std::vector<Result> mean(orders.size());
-  for (unsigned int o = 0; o < orders.size(); ++o)
+  if (orders)
     {
-      for (const auto &r : results[o])
-        {
-          mean[o].factorization += r.factorization / rounds;
-          mean[o].elimination += r.elimination / rounds;
-          mean[o].substitution += r.substitution / rounds;
-          mean[o].error = std::max(mean[o].error, r.error);
-        }
-      mean[o].statistics = results[o].front().statistics;
-      mean[o].resident   = results[o].front().resident;
-      table_row(out, orders[o].second, mean[o]);
-    }
-  ratios(out, "nested dissection / PORD", mean[0], mean[1]);
-  ratios(out, "SCOTCH / METIS", mean[2], mean[0]);
+      const std::vector<std::pair<Ordering, std::string>> by_order = {
+        {Ordering::nested_dissection, "nested dissection (METIS)"},
+        {Ordering::pord, "PORD"},
+        {Ordering::scotch, "nested dissection (SCOTCH)"}};
+      std::vector<std::vector<Result>> results(by_order.size());
+      Vector                           x(b);
+      for (unsigned int r = 0; r < rounds; ++r)
+        for (unsigned int o = 0; o < by_order.size(); ++o)
+          results[o].push_back(measure(A, interface, by_order[o].first, b, x_exact, solves, x));
 
-  // The products of one column: dgemv against the BLAS's dgemm, on one
-  // factor, alternating.
-  {
-    const time::CondensedFactorization factor(A, false, interface, Ordering::nested_dissection);
-    Vector                             x_gemv(b), x_gemm(b);
-    Result                             gemv, gemm;
-    for (unsigned int r = 0; r < rounds; ++r)
-      for (const bool forward : {true, false})
+      out << "\nper order, means over " << rounds << " round(s), " << solves
+          << " solves each; peak resident memory of the process " << std::setprecision(3)
+          << bench::memory_gb("VmHWM") << " GB\n";
+      table_header(out, "order");
+      std::vector<Result> mean(by_order.size());
+      for (unsigned int o = 0; o < by_order.size(); ++o)
         {
-          Result one;
-          time::forward_single_column_products(forward);
-          solve(factor, b, solves, forward ? x_gemv : x_gemm, one);
-          auto &sum = forward ? gemv : gemm;
-          sum.elimination += one.elimination / rounds;
-          sum.substitution += one.substitution / rounds;
+          for (const auto &r : results[o])
+            {
+              mean[o].factorization += r.factorization / rounds;
+              mean[o].elimination += r.elimination / rounds;
+              mean[o].substitution += r.substitution / rounds;
+              mean[o].error = std::max(mean[o].error, r.error);
+            }
+          mean[o].statistics = results[o].front().statistics;
+          mean[o].resident   = results[o].front().resident;
+          table_row(out, by_order[o].second, mean[o]);
         }
-    time::forward_single_column_products(true);
-    x_gemm -= x_gemv;
-    out << "\nsolves with MUMPS's products of one column by dgemv and by dgemm (" << rounds
-        << " round(s) of " << solves << " solves each, alternating)\n"
-        << std::left << std::setw(28) << "products of one column" << std::right
-        << std::setw(16) << "elimination [s]" << std::setw(17) << "substitution [s]" << "\n";
-    for (const auto &[name, m] : {std::pair<std::string, Result>{"dgemv", gemv}, {"dgemm", gemm}})
-      out << std::left << std::setw(28) << name << std::right << std::setprecision(3)
-          << std::setw(16) << m.elimination << std::setw(17) << m.substitution << "\n";
-    out << "\n";
-    bench::figure(out, "dgemv / dgemm, elimination") << gemv.elimination / gemm.elimination << "\n";
-    bench::figure(out, "dgemv / dgemm, substitution")
-      << gemv.substitution / gemm.substitution << "\n";
-    bench::figure(out, "largest difference of the two solutions / largest entry")
-      << x_gemm.linfty_norm() / x_gemv.linfty_norm() << "\n";
-  }
+      ratios(out, "nested dissection / PORD", mean[0], mean[1]);
+      ratios(out, "SCOTCH / METIS", mean[2], mean[0]);
+
+      // The products of one column: dgemv against the BLAS's dgemm, on one
+      // factor, alternating.
+      {
+        const time::CondensedFactorization factor(A, false, interface, Ordering::nested_dissection);
+        Vector                             x_gemv(b), x_gemm(b);
+        Result                             gemv, gemm;
+        for (unsigned int r = 0; r < rounds; ++r)
+          for (const bool forward : {true, false})
+            {
+              Result one;
+              time::forward_single_column_products(forward);
+              solve(factor, b, solves, forward ? x_gemv : x_gemm, one);
+              auto &sum = forward ? gemv : gemm;
+              sum.elimination += one.elimination / rounds;
+              sum.substitution += one.substitution / rounds;
+            }
+        time::forward_single_column_products(true);
+        x_gemm -= x_gemv;
+        out << "\nsolves with MUMPS's products of one column by dgemv and by dgemm (" << rounds
+            << " round(s) of " << solves << " solves each, alternating)\n"
+            << std::left << std::setw(28) << "products of one column" << std::right
+            << std::setw(16) << "elimination [s]" << std::setw(17) << "substitution [s]" << "\n";
+        for (const auto &[name, m] : {std::pair<std::string, Result>{"dgemv", gemv}, {"dgemm", gemm}})
+          out << std::left << std::setw(28) << name << std::right << std::setprecision(3)
+              << std::setw(16) << m.elimination << std::setw(17) << m.substitution << "\n";
+        out << "\n";
+        bench::figure(out, "dgemv / dgemm, elimination") << gemv.elimination / gemm.elimination << "\n";
+        bench::figure(out, "dgemv / dgemm, substitution")
+          << gemv.substitution / gemm.substitution << "\n";
+        bench::figure(out, "largest difference of the two solutions / largest entry")
+          << x_gemm.linfty_norm() / x_gemv.linfty_norm() << "\n";
+      }
+    }
 
   // Block low-rank factors against the full-rank one, one alive at a time.
   if (!low_rank.empty())
@@ -317,6 +350,45 @@ main(int argc, char **argv)
           ratios(out, label.str(), compressed[k].second, full);
           bench::figure(out, label.str() + ", change of the solution") << change[k] << "\n";
         }
+    }
+
+  // Single against double precision (time::FactorPrecision) at each
+  // tolerance of --single (0: full rank), one factor alive at a time.
+  if (!single.empty())
+    {
+      out << "\nsingle against double precision (nested dissection), " << solves
+          << " solves each; \"refined\" is the error after one step of iterative refinement "
+             "in double (one product with A and one more solve)\n";
+      table_header(out, "factor");
+      std::vector<std::pair<Result, Result>> pairs;
+      for (const double tolerance : single)
+        {
+          std::pair<Result, Result> pair;
+          for (const auto precision :
+               {time::FactorPrecision::double_precision, time::FactorPrecision::single_precision})
+            {
+              Vector       x_p(b);
+              const Result r = measure(A, interface, Ordering::nested_dissection, b, x_exact,
+                                       solves, x_p, tolerance, precision);
+              const bool   in_single = precision == time::FactorPrecision::single_precision;
+              (in_single ? pair.second : pair.first) = r;
+              std::ostringstream name;
+              name << (in_single ? "single" : "double") << ", CNTL(7) = " << tolerance;
+              table_row(out, name.str(), r);
+            }
+          pairs.push_back(pair);
+        }
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+        {
+          std::ostringstream label;
+          label << "single / double at CNTL(7) = " << single[k];
+          ratios(out, label.str(), pairs[k].second, pairs[k].first);
+          bench::figure(out, label.str() + ", error in single, refined once")
+            << pairs[k].second.error << ", " << pairs[k].second.refined << "\n";
+        }
+      std::ostringstream label;
+      label << "single at CNTL(7) = " << single.back() << " / double at " << single.front();
+      ratios(out, label.str(), pairs.back().second, pairs.front().first);
     }
   return 0;
 }

@@ -345,4 +345,6 @@ main(int argc, char **argv)
        "Contraction joints/Solver=monolithic", "--set",
        "Contraction joints/Contact in time=step impulse"});
   run_set("a low-rank factor with glued joints", "Time integration/Low-rank tolerance=1e-8");
+  run_set("a single-precision factor with glued joints",
+          "Time integration/Factor precision=single");
 }

@@ -130,6 +130,12 @@ namespace archdam
         throw InputError("Time integration/Low-rank tolerance compresses the factor condensed on "
                          "the joints' node pairs (Contraction joints/Model = frictional contact, "
                          "Solver = mixed); this case has no such factor: set it to 0.");
+      if (p.time_integration.factor_precision != time::FactorPrecision::double_precision &&
+          !(p.joints.frictional() && p.joints.solver == joints::Solver::mixed))
+        throw InputError("Time integration/Factor precision = single applies to the factor "
+                         "condensed on the joints' node pairs (Contraction joints/Model = "
+                         "frictional contact, Solver = mixed); this case has no such factor: "
+                         "set it to double.");
       // The static loads are applied in the static stage only, and the
       // dynamic stage starts from its state: without it they would be lost.
       if (p.analysis.runs("dynamic") && !p.analysis.runs("static"))

@@ -6,6 +6,7 @@
 #include <deal.II/lac/exceptions.h>
 
 #include <dmumps_c.h>
+#include <smumps_c.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,20 +16,53 @@ namespace archdam::time
 {
   using namespace dealii;
 
+  namespace
+  {
+    /// MUMPS's C interface in the arithmetic of the factor.
+    template <typename Real>
+    struct MumpsInterface;
+
+    template <>
+    struct MumpsInterface<double>
+    {
+      using Struc = DMUMPS_STRUC_C;
+      static void
+      call(Struc &id)
+      {
+        dmumps_c(&id);
+      }
+    };
+
+    template <>
+    struct MumpsInterface<float>
+    {
+      using Struc = SMUMPS_STRUC_C;
+      static void
+      call(Struc &id)
+      {
+        smumps_c(&id);
+      }
+    };
+  } // namespace
+
+  /// One MUMPS instance whose factor, right-hand sides and Schur complement
+  /// are of type Real (double, or float for a single-precision factor: the
+  /// values are rounded on the way in and widened on the way out).
+  template <typename Real>
   struct CondensedFactorization::Mumps
   {
-    DMUMPS_STRUC_C id{};
+    typename MumpsInterface<Real>::Struc id{};
     MPI_Comm       comm = MPI_COMM_NULL;
     /// Gathers a distributed vector on rank 0 and scatters it back.
     VecScatter to_zero = nullptr;
     Vec        on_zero = nullptr;
     std::vector<MUMPS_INT> irn, jcn, schur_list, perm;
-    std::vector<double>    values, schur, rhs, reduced;
+    std::vector<Real>      values, schur, rhs, reduced;
     /// The symmetric scaling D = diag(|a_ii|^(-1/2)) of every unknown (on
     /// every rank): MUMPS factorizes D A D, whose diagonal entries are ±1.
     std::vector<double> scaling;
     /// A right-hand side on the interface alone, as MUMPS's sparse one.
-    std::vector<double>    sparse_values;
+    std::vector<Real>      sparse_values;
     std::vector<MUMPS_INT> sparse_rows, sparse_start{1, 1};
 
     MUMPS_INT &
@@ -42,7 +76,7 @@ namespace archdam::time
     run(const int job, const char *phase)
     {
       id.job = job;
-      dmumps_c(&id);
+      MumpsInterface<Real>::call(id);
       AssertThrow(id.infog[0] >= 0,
                   ExcMessage(std::string("MUMPS failed in the ") + phase +
                              " of the condensed factorization: INFOG(1) = " +
@@ -55,7 +89,7 @@ namespace archdam::time
       if (id.job != 0)
         {
           id.job = -2;
-          dmumps_c(&id);
+          MumpsInterface<Real>::call(id);
         }
       if (to_zero != nullptr)
         VecScatterDestroy(&to_zero);
@@ -67,9 +101,8 @@ namespace archdam::time
   CondensedFactorization::CondensedFactorization(
     const SparseMatrix &A, const bool positive_definite,
     const std::vector<dealii::types::global_dof_index> &interface, const Ordering ordering,
-    const double low_rank_tolerance)
-    : mumps(std::make_unique<Mumps>())
-    , gamma(interface)
+    const double low_rank_tolerance, const FactorPrecision precision)
+    : gamma(interface)
   {
     // The interface (NodePairs::interface()): sorted, unique, rows of A.
     AssertThrow(std::is_sorted(gamma.begin(), gamma.end()) &&
@@ -78,8 +111,21 @@ namespace archdam::time
                 ExcMessage("The condensed interface must be sorted, unique DOFs of the matrix."));
     AssertThrow(low_rank_tolerance >= 0.,
                 ExcMessage("The low-rank tolerance of a factorization must not be negative."));
-    auto &m    = *mumps;
-    m.comm     = A.get_mpi_communicator();
+    if (precision == FactorPrecision::single_precision)
+      factorize(*mumps.emplace<std::unique_ptr<Mumps<float>>>(std::make_unique<Mumps<float>>()),
+                A, positive_definite, ordering, low_rank_tolerance);
+    else
+      factorize(*mumps.emplace<std::unique_ptr<Mumps<double>>>(std::make_unique<Mumps<double>>()),
+                A, positive_definite, ordering, low_rank_tolerance);
+  }
+
+  template <typename Real>
+  void
+  CondensedFactorization::factorize(Mumps<Real> &m, const SparseMatrix &A,
+                                    const bool positive_definite, const Ordering ordering,
+                                    const double low_rank_tolerance)
+  {
+    m.comm          = A.get_mpi_communicator();
     const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
     const auto k    = static_cast<MUMPS_INT>(gamma.size());
 
@@ -99,7 +145,7 @@ namespace archdam::time
     const Mat mat = static_cast<const Mat &>(A);
     PetscInt  first, last;
     petsc_check(MatGetOwnershipRange(mat, &first, &last));
-    std::vector<double> owned_scaling;
+    std::vector<double> owned_scaling, values; // the values scaled and rounded below
     for (PetscInt row = first; row < last; ++row)
       {
         PetscInt           n_cols;
@@ -112,7 +158,7 @@ namespace archdam::time
             {
               m.irn.push_back(static_cast<MUMPS_INT>(row + 1));
               m.jcn.push_back(static_cast<MUMPS_INT>(cols[c] + 1));
-              m.values.push_back(vals[c]);
+              values.push_back(vals[c]);
               if (cols[c] == row)
                 diagonal = std::abs(vals[c]);
             }
@@ -127,8 +173,11 @@ namespace archdam::time
     for (const auto &part : Utilities::MPI::all_gather(m.comm, owned_scaling))
       m.scaling.insert(m.scaling.end(), part.begin(), part.end());
     AssertThrow(m.scaling.size() == A.m(), ExcInternalError());
-    for (std::size_t e = 0; e < m.values.size(); ++e)
-      m.values[e] *= m.scaling[m.irn[e] - 1] * m.scaling[m.jcn[e] - 1];
+    m.values.resize(values.size());
+    for (std::size_t e = 0; e < values.size(); ++e)
+      m.values[e] =
+        static_cast<Real>(values[e] * m.scaling[m.irn[e] - 1] * m.scaling[m.jcn[e] - 1]);
+    std::vector<double>().swap(values);
     m.id.n       = static_cast<MUMPS_INT>(A.m());
     m.id.nnz_loc = static_cast<MUMPS_INT8>(m.values.size());
     m.id.irn_loc = m.irn.data();
@@ -201,7 +250,7 @@ namespace archdam::time
     if (low_rank_tolerance > 0.)
       {
         m.icntl(35)  = 2;                  // block low-rank factors, kept compressed for the solves
-        m.id.cntl[6] = low_rank_tolerance; // CNTL(7): the blocks' dropping tolerance
+        m.id.cntl[6] = static_cast<Real>(low_rank_tolerance); // CNTL(7): the blocks' dropping tolerance
       }
     m.run(1, "analysis");
     m.run(2, "factorization");
@@ -210,7 +259,7 @@ namespace archdam::time
     m.id.a_loc                  = nullptr;
     std::vector<MUMPS_INT>().swap(m.irn);
     std::vector<MUMPS_INT>().swap(m.jcn);
-    std::vector<double>().swap(m.values);
+    std::vector<Real>().swap(m.values);
     // INFOG(29) < 0 counts millions (MUMPS's convention for large factors);
     // with low-rank factors INFOG(35) counts the entries they keep.
     const int entries = m.id.infog[low_rank_tolerance > 0. ? 34 : 28];
@@ -234,7 +283,7 @@ namespace archdam::time
       }
     else
       schur.compute_lu_factorization();
-    std::vector<double>().swap(m.schur);
+    std::vector<Real>().swap(m.schur);
     m.id.schur = nullptr; // read by the factorization only
 
     m.reduced.resize(k);
@@ -275,107 +324,119 @@ namespace archdam::time
   void
   CondensedFactorization::condense(const archdam::Vector &b, dealii::Vector<double> &y) const
   {
-    auto      &m    = *mumps;
-    const Vec &vec  = static_cast<const Vec &>(b);
-    const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
-    if (m.to_zero == nullptr)
-      petsc_check(VecScatterCreateToZero(vec, &m.to_zero, &m.on_zero));
-    petsc_check(VecScatterBegin(m.to_zero, vec, m.on_zero, INSERT_VALUES, SCATTER_FORWARD));
-    petsc_check(VecScatterEnd(m.to_zero, vec, m.on_zero, INSERT_VALUES, SCATTER_FORWARD));
-    if (host)
-      {
-        const PetscScalar *a;
-        petsc_check(VecGetArrayRead(m.on_zero, &a));
-        m.rhs.assign(a, a + b.size());
-        petsc_check(VecRestoreArrayRead(m.on_zero, &a));
-        for (std::size_t i = 0; i < m.rhs.size(); ++i)
-          m.rhs[i] *= m.scaling[i];
-        m.id.rhs     = m.rhs.data();
-        m.id.nrhs    = 1;
-        m.id.lrhs    = static_cast<MUMPS_INT>(b.size());
-        m.id.redrhs  = m.reduced.data();
-        m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
-      }
-    m.icntl(26) = 1; // condensation: forward elimination, reduced right-hand side
-    elimination.start();
-    m.run(3, "condensation");
-    elimination.stop();
-    const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
-    y.reinit(reduced.size(), true);
-    for (unsigned int i = 0; i < y.size(); ++i)
-      y[i] = reduced[i] / gamma_scaling[i];
+    std::visit(
+      [&](auto &owner) {
+        auto &m = *owner;
+        const Vec &vec  = static_cast<const Vec &>(b);
+        const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
+        if (m.to_zero == nullptr)
+          petsc_check(VecScatterCreateToZero(vec, &m.to_zero, &m.on_zero));
+        petsc_check(VecScatterBegin(m.to_zero, vec, m.on_zero, INSERT_VALUES, SCATTER_FORWARD));
+        petsc_check(VecScatterEnd(m.to_zero, vec, m.on_zero, INSERT_VALUES, SCATTER_FORWARD));
+        if (host)
+          {
+            const PetscScalar *a;
+            petsc_check(VecGetArrayRead(m.on_zero, &a));
+            m.rhs.assign(a, a + b.size());
+            petsc_check(VecRestoreArrayRead(m.on_zero, &a));
+            for (std::size_t i = 0; i < m.rhs.size(); ++i)
+              m.rhs[i] *= m.scaling[i];
+            m.id.rhs     = m.rhs.data();
+            m.id.nrhs    = 1;
+            m.id.lrhs    = static_cast<MUMPS_INT>(b.size());
+            m.id.redrhs  = m.reduced.data();
+            m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
+          }
+        m.icntl(26) = 1; // condensation: forward elimination, reduced right-hand side
+        elimination.start();
+        m.run(3, "condensation");
+        elimination.stop();
+        const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
+        y.reinit(reduced.size(), true);
+        for (unsigned int i = 0; i < y.size(); ++i)
+          y[i] = reduced[i] / gamma_scaling[i];
+      },
+      mumps);
   }
 
   void
   CondensedFactorization::solve_interface_load(const dealii::Vector<double> &q,
                                                archdam::Vector              &x) const
   {
-    auto      &m    = *mumps;
-    const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
-    AssertDimension(q.size(), gamma.size());
-    if (m.to_zero == nullptr)
-      petsc_check(VecScatterCreateToZero(static_cast<const Vec &>(x), &m.to_zero, &m.on_zero));
-    if (host)
-      {
-        // b as MUMPS's sparse right-hand side (ICNTL(20) = 1): its forward
-        // elimination visits only the fronts that hold b's entries, here the
-        // interface's, eliminated last.
-        m.sparse_values.assign(q.begin(), q.end());
+    std::visit(
+      [&](auto &owner) {
+        auto &m = *owner;
+        const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
+        AssertDimension(q.size(), gamma.size());
+        if (m.to_zero == nullptr)
+          petsc_check(VecScatterCreateToZero(static_cast<const Vec &>(x), &m.to_zero, &m.on_zero));
+        if (host)
+          {
+            // b as MUMPS's sparse right-hand side (ICNTL(20) = 1): its forward
+            // elimination visits only the fronts that hold b's entries, here the
+            // interface's, eliminated last.
+            m.sparse_values.assign(q.begin(), q.end());
+            for (unsigned int g = 0; g < gamma.size(); ++g)
+              m.sparse_values[g] *= gamma_scaling[g];
+            m.sparse_rows.resize(gamma.size());
+            for (unsigned int g = 0; g < gamma.size(); ++g)
+              m.sparse_rows[g] = static_cast<MUMPS_INT>(gamma[g] + 1);
+            m.sparse_start[1]  = static_cast<MUMPS_INT>(gamma.size() + 1);
+            m.id.nz_rhs        = static_cast<MUMPS_INT>(gamma.size());
+            m.id.rhs_sparse    = m.sparse_values.data();
+            m.id.irhs_sparse   = m.sparse_rows.data();
+            m.id.irhs_ptr      = m.sparse_start.data();
+            m.rhs.assign(x.size(), 0.); // the solution's place
+            m.id.rhs     = m.rhs.data();
+            m.id.nrhs    = 1;
+            m.id.lrhs    = static_cast<MUMPS_INT>(x.size());
+            m.id.redrhs  = m.reduced.data();
+            m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
+          }
+        m.icntl(20) = 1;
+        m.icntl(26) = 1;
+        elimination.start();
+        m.run(3, "condensation of an interface load");
+        elimination.stop();
+        dealii::Vector<double> x_gamma(gamma.size());
+        const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
         for (unsigned int g = 0; g < gamma.size(); ++g)
-          m.sparse_values[g] *= gamma_scaling[g];
-        m.sparse_rows.resize(gamma.size());
-        for (unsigned int g = 0; g < gamma.size(); ++g)
-          m.sparse_rows[g] = static_cast<MUMPS_INT>(gamma[g] + 1);
-        m.sparse_start[1]  = static_cast<MUMPS_INT>(gamma.size() + 1);
-        m.id.nz_rhs        = static_cast<MUMPS_INT>(gamma.size());
-        m.id.rhs_sparse    = m.sparse_values.data();
-        m.id.irhs_sparse   = m.sparse_rows.data();
-        m.id.irhs_ptr      = m.sparse_start.data();
-        m.rhs.assign(x.size(), 0.); // the solution's place
-        m.id.rhs     = m.rhs.data();
-        m.id.nrhs    = 1;
-        m.id.lrhs    = static_cast<MUMPS_INT>(x.size());
-        m.id.redrhs  = m.reduced.data();
-        m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
-      }
-    m.icntl(20) = 1;
-    m.icntl(26) = 1;
-    elimination.start();
-    m.run(3, "condensation of an interface load");
-    elimination.stop();
-    dealii::Vector<double> x_gamma(gamma.size());
-    const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
-    for (unsigned int g = 0; g < gamma.size(); ++g)
-      x_gamma[g] = reduced[g] / gamma_scaling[g];
-    solve_interface(x_gamma);
-    expand(x_gamma, x);
-    m.icntl(20) = 0;
+          x_gamma[g] = reduced[g] / gamma_scaling[g];
+        solve_interface(x_gamma);
+        expand(x_gamma, x);
+        m.icntl(20) = 0;
+      },
+      mumps);
   }
 
   void
   CondensedFactorization::expand(const dealii::Vector<double> &x_gamma,
                                  archdam::Vector &x) const
   {
-    auto      &m    = *mumps;
-    const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
-    if (host)
-      for (unsigned int g = 0; g < gamma.size(); ++g)
-        m.reduced[g] = x_gamma[g] / gamma_scaling[g];
-    m.icntl(26) = 2; // expansion: backward substitution from x_Γ
-    substitution.start();
-    m.run(3, "expansion");
-    substitution.stop();
-    if (host)
-      {
-        PetscScalar *a;
-        petsc_check(VecGetArray(m.on_zero, &a));
-        for (std::size_t i = 0; i < m.rhs.size(); ++i)
-          a[i] = m.rhs[i] * m.scaling[i];
-        petsc_check(VecRestoreArray(m.on_zero, &a));
-      }
-    const Vec &vec = static_cast<const Vec &>(x);
-    petsc_check(VecScatterBegin(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
-    petsc_check(VecScatterEnd(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
+    std::visit(
+      [&](auto &owner) {
+        auto &m = *owner;
+        const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
+        if (host)
+          for (unsigned int g = 0; g < gamma.size(); ++g)
+            m.reduced[g] = x_gamma[g] / gamma_scaling[g];
+        m.icntl(26) = 2; // expansion: backward substitution from x_Γ
+        substitution.start();
+        m.run(3, "expansion");
+        substitution.stop();
+        if (host)
+          {
+            PetscScalar *a;
+            petsc_check(VecGetArray(m.on_zero, &a));
+            for (std::size_t i = 0; i < m.rhs.size(); ++i)
+              a[i] = m.rhs[i] * m.scaling[i];
+            petsc_check(VecRestoreArray(m.on_zero, &a));
+          }
+        const Vec &vec = static_cast<const Vec &>(x);
+        petsc_check(VecScatterBegin(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
+        petsc_check(VecScatterEnd(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
+      },
+      mumps);
   }
 
   CondensedFactorization::SolveTimes

@@ -17,7 +17,8 @@ namespace archdam::time
   void
   FactorizedOperator::factorize(const SparseMatrix &A, const bool positive_definite,
                                 const std::vector<types::global_dof_index> &interface,
-                                const double low_rank_tolerance)
+                                const double          low_rank_tolerance,
+                                const FactorPrecision precision)
   {
     if (interface.empty())
       factorize(static_cast<Mat>(A), positive_definite);
@@ -29,7 +30,7 @@ namespace archdam::time
         condensed_factor =
           std::make_unique<CondensedFactorization>(A, positive_definite, interface,
                                                    CondensedFactorization::Ordering::nested_dissection,
-                                                   low_rank_tolerance);
+                                                   low_rank_tolerance, precision);
       }
   }
 

@@ -34,6 +34,13 @@ namespace archdam::time
                       "tolerance (doc/performance.md §8). For frictional joints with the "
                       "mixed solver, whose factor is condensed on the node pairs.",
                       Patterns::Double(0., 1e-3));
+    add_selection(prm, "Factor precision", factor_precision, factor_precision_names(),
+                  "The arithmetic of the factor of the effective matrix: double, or single "
+                  "(the factor's bytes halved, and the steps' substitutions about 0.6 of "
+                  "their time in double; each solve then exact to about 1e-5 of the "
+                  "solution in the unknowns' own scale, doc/performance.md §8). For "
+                  "frictional joints with the mixed solver, whose factor is condensed on the "
+                  "node pairs.");
   }
 
   void
@@ -126,7 +133,7 @@ namespace archdam::time
                   ExcMessage("PETSc MatAXPY failed."));
     add_dashpots_to_effective_matrix();
     effective_operator.factorize(effective_matrix, positive_definite, factor_interface,
-                                 p.low_rank_tolerance);
+                                 p.low_rank_tolerance, p.factor_precision);
 
     const IndexSet owned = M.locally_owned_range_indices();
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,

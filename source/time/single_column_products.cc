@@ -8,13 +8,19 @@
 
 // The Fortran BLAS interface (hidden string lengths are not passed: the
 // character arguments are single letters, as every BLAS caller does).
-using Dgemm = void (*)(const char *, const char *, const int *, const int *, const int *,
-                       const double *, const double *, const int *, const double *,
-                       const int *, const double *, double *, const int *);
+template <typename Real>
+using Gemm = void (*)(const char *, const char *, const int *, const int *, const int *,
+                      const Real *, const Real *, const int *, const Real *, const int *,
+                      const Real *, Real *, const int *);
 
 extern "C" void
 dgemv_(const char *trans, const int *m, const int *n, const double *alpha, const double *a,
        const int *lda, const double *x, const int *incx, const double *beta, double *y,
+       const int *incy);
+
+extern "C" void
+sgemv_(const char *trans, const int *m, const int *n, const float *alpha, const float *a,
+       const int *lda, const float *x, const int *incx, const float *beta, float *y,
        const int *incy);
 
 namespace
@@ -22,16 +28,20 @@ namespace
   std::atomic<std::uint64_t> forwarded{0};
   std::atomic<bool>          forwarding{true};
 
-  Dgemm
-  blas_dgemm()
+  /// The BLAS's own gemm of this precision (@p name): the next definition in
+  /// the search order after this library.
+  template <typename Real>
+  Gemm<Real>
+  blas_gemm(const char *name)
   {
-    // The next dgemm_ in the search order after this library: the BLAS's.
-    static const Dgemm next = [] {
-      const auto f = reinterpret_cast<Dgemm>(dlsym(RTLD_NEXT, "dgemm_"));
+    static const Gemm<Real> next = [name] {
+      const auto f = reinterpret_cast<Gemm<Real>>(dlsym(RTLD_NEXT, name));
       if (f == nullptr)
         {
-          std::fprintf(stderr, "archdam: error: no BLAS library with dgemm_ is loaded "
-                               "(time/single_column_products.h).\n");
+          std::fprintf(stderr,
+                       "archdam: error: no BLAS library with %s is loaded "
+                       "(time/single_column_products.h).\n",
+                       name);
           std::abort();
         }
       return f;
@@ -44,6 +54,45 @@ namespace
   {
     return *t != 'N' && *t != 'n';
   }
+
+  void
+  gemv(const char *trans, const int *m, const int *n, const double *alpha, const double *a,
+       const int *lda, const double *x, const int *incx, const double *beta, double *y,
+       const int *incy)
+  {
+    dgemv_(trans, m, n, alpha, a, lda, x, incx, beta, y, incy);
+  }
+
+  void
+  gemv(const char *trans, const int *m, const int *n, const float *alpha, const float *a,
+       const int *lda, const float *x, const int *incx, const float *beta, float *y,
+       const int *incy)
+  {
+    sgemv_(trans, m, n, alpha, a, lda, x, incx, beta, y, incy);
+  }
+
+  /// c (m x n) = alpha op(A) op(B) + beta c; with n = 1 by gemv.
+  template <typename Real>
+  void
+  gemm(const char *name, const char *transa, const char *transb, const int *m, const int *n,
+       const int *k, const Real *alpha, const Real *a, const int *lda, const Real *b,
+       const int *ldb, const Real *beta, Real *c, const int *ldc)
+  {
+    if (*n != 1 || *m <= 0 || *k <= 0 || !forwarding.load(std::memory_order_relaxed))
+      {
+        blas_gemm<Real>(name)(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+        return;
+      }
+    // op(B) is k x 1, a column of B (stride 1) or, transposed, a row of B
+    // (stride ldb).
+    const int one  = 1;
+    const int incx = transposed(transb) ? *ldb : 1;
+    if (transposed(transa)) // A is k x m
+      gemv("T", k, m, alpha, a, lda, b, &incx, beta, c, &one);
+    else // A is m x k
+      gemv("N", m, k, alpha, a, lda, b, &incx, beta, c, &one);
+    forwarded.fetch_add(1, std::memory_order_relaxed);
+  }
 } // namespace
 
 extern "C" void
@@ -51,20 +100,16 @@ dgemm_(const char *transa, const char *transb, const int *m, const int *n, const
        const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
        const double *beta, double *c, const int *ldc)
 {
-  if (*n != 1 || *m <= 0 || *k <= 0 || !forwarding.load(std::memory_order_relaxed))
-    {
-      blas_dgemm()(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
-      return;
-    }
-  // c (m x 1) = alpha op(A) b + beta c: op(B) is k x 1, a column of B (stride
-  // 1) or, transposed, a row of B (stride ldb).
-  const int one  = 1;
-  const int incx = transposed(transb) ? *ldb : 1;
-  if (transposed(transa)) // A is k x m
-    dgemv_("T", k, m, alpha, a, lda, b, &incx, beta, c, &one);
-  else // A is m x k
-    dgemv_("N", m, k, alpha, a, lda, b, &incx, beta, c, &one);
-  forwarded.fetch_add(1, std::memory_order_relaxed);
+  gemm("dgemm_", transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+}
+
+// The solves of a single-precision factor (Time integration/Factor precision).
+extern "C" void
+sgemm_(const char *transa, const char *transb, const int *m, const int *n, const int *k,
+       const float *alpha, const float *a, const int *lda, const float *b, const int *ldb,
+       const float *beta, float *c, const int *ldc)
+{
+  gemm("sgemm_", transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
 }
 
 namespace archdam::time

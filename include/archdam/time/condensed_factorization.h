@@ -7,10 +7,21 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <variant>
 #include <vector>
 
 namespace archdam::time
 {
+  /// The arithmetic in which a sparse factor is computed, held and applied
+  /// (doc/performance.md §8): single precision halves the factor's bytes
+  /// and so the memory traffic of the substitutions, at a solve error of
+  /// about the condition number times 6e-8.
+  enum class FactorPrecision
+  {
+    double_precision,
+    single_precision
+  };
+
   /**
    * A symmetric sparse matrix A factorized once by MUMPS with the unknowns
    * of an interface set Γ eliminated last, so that the factorization also
@@ -44,11 +55,16 @@ namespace archdam::time
     /// the factors are kept and used in the solves compressed, and the
     /// solves are approximate to about that tolerance. 0, the default, is
     /// the exact (full-rank) factorization; doc/performance.md §8 gives the
-    /// measurements behind that default.
+    /// measurements behind that default. With @p precision single the factor
+    /// and the Schur complement are computed in single precision (the
+    /// matrix scaled first, so that its entries are of order one): the
+    /// interfaces stay in double, and a solve is exact to about the
+    /// condition number of the scaled matrix times 6e-8.
     CondensedFactorization(const SparseMatrix &A, bool positive_definite,
                            const std::vector<dealii::types::global_dof_index> &interface,
-                           Ordering ordering = Ordering::nested_dissection,
-                           double   low_rank_tolerance = 0.);
+                           Ordering        ordering           = Ordering::nested_dissection,
+                           double          low_rank_tolerance = 0.,
+                           FactorPrecision precision          = FactorPrecision::double_precision);
     ~CondensedFactorization();
     CondensedFactorization(const CondensedFactorization &) = delete;
     CondensedFactorization &
@@ -110,8 +126,13 @@ namespace archdam::time
     solve_interface_load(const dealii::Vector<double> &q, Vector &x) const;
 
   private:
+    template <typename Real>
     struct Mumps;
-    std::unique_ptr<Mumps>                   mumps;
+    std::variant<std::unique_ptr<Mumps<double>>, std::unique_ptr<Mumps<float>>> mumps;
+    template <typename Real>
+    void
+    factorize(Mumps<Real> &m, const SparseMatrix &A, bool positive_definite, Ordering ordering,
+              double low_rank_tolerance);
     std::vector<dealii::types::global_dof_index>     gamma;
     dealii::LAPACKFullMatrix<double>         schur; ///< of D A D, factorized
     std::vector<double>                      gamma_scaling; ///< D on Γ

@@ -33,11 +33,13 @@ namespace archdam::time
     /// (CondensedFactorization: MUMPS directly, the interface eliminated
     /// last); solve() then runs its three parts, and a @p
     /// low_rank_tolerance > 0 asks for its block low-rank factors with that
-    /// dropping tolerance (doc/performance.md §8).
+    /// dropping tolerance, and @p precision for its arithmetic
+    /// (doc/performance.md §8).
     void
     factorize(const SparseMatrix &A, bool positive_definite,
               const std::vector<dealii::types::global_dof_index> &interface = {},
-              double low_rank_tolerance = 0.);
+              double          low_rank_tolerance = 0.,
+              FactorPrecision precision          = FactorPrecision::double_precision);
 
     /// The same for a matrix PETSc holds directly (kept referenced by PETSc).
     void

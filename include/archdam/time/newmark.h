@@ -1,5 +1,6 @@
 #pragma once
 
+#include <archdam/base/selection.h>
 #include <archdam/base/types.h>
 #include <archdam/time/factorized_operator.h>
 
@@ -11,6 +12,17 @@
 
 namespace archdam::time
 {
+  /// The names of FactorPrecision in the case file (`Time integration/Factor
+  /// precision`).
+  inline const SelectionNames<FactorPrecision> &
+  factor_precision_names()
+  {
+    static const SelectionNames<FactorPrecision> names{
+      {"double", FactorPrecision::double_precision},
+      {"single", FactorPrecision::single_precision}};
+    return names;
+  }
+
   /// The `Time integration` subsection (doc/theory/time-integration.md §2).
   struct NewmarkParameters
   {
@@ -21,6 +33,8 @@ namespace archdam::time
     /// The dropping tolerance of the effective matrix's block low-rank
     /// factor (0: full rank; doc/performance.md §8).
     double low_rank_tolerance = 0.;
+    /// The arithmetic of that factor (doc/performance.md §8).
+    FactorPrecision factor_precision = FactorPrecision::double_precision;
 
     void
     add_parameters(dealii::ParameterHandler &prm);

@@ -23,10 +23,11 @@ namespace archdam::time
    * deal.II's LAPACK wrappers) to this definition, which calls dgemv_ for
    * n = 1 and the BLAS's own dgemm_ (found with dlsym(RTLD_NEXT)) for every
    * other product. The result is the same product, summed in another order
-   * (round-off).
+   * (round-off). sgemm_, which a single-precision factor's solves call
+   * (Time integration/Factor precision), goes to sgemv_ the same way.
    */
 
-  /// How many dgemm calls of this process went to dgemv (for the tests and
+  /// How many dgemm and sgemm calls of this process went to gemv (for the tests and
   /// the benchmarks: 0 means the forwarding is not in effect).
   std::uint64_t
   single_column_products_forwarded();
