@@ -145,6 +145,12 @@ namespace archdam::analysis
     scheme.time_step   = r.time_step;
     scheme.beta1       = 0.75;
     scheme.beta2       = 0.390625; // (beta1 + 1/2)^2 / 4
+    // Its factor in the dynamic stage's precision (doc/performance.md §8):
+    // the out-of-balance force that ends the relaxation is computed with K
+    // itself, so a single-precision factor changes the path to rest, not
+    // what the state at rest satisfies. (Block low rank is left to the
+    // dynamic stage: on the case's mesh it raised this stage's peak memory.)
+    scheme.factor_precision = p.time_integration.factor_precision;
     const double alpha = 4. * numbers::PI * r.frequency;
 
     time::NewmarkState s;
