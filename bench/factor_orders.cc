@@ -113,10 +113,10 @@ namespace
     r.substitution   = (after.substitution - before.substitution) / solves;
   }
 
-  /// Factorize A in @p ordering (block low-rank if @p low_rank > 0), solve
-  /// @p solves times; the solution into @p x.
-  /// In @p precision; also the error after one step of iterative
-  /// refinement in double, x + A~^{-1} (b - A x), into r.refined.
+  /// Factorize A in @p ordering and @p precision (block low-rank if @p
+  /// low_rank > 0), solve @p solves times; the solution into @p x, and the
+  /// error after one step of iterative refinement in double, x + A~^{-1}
+  /// (b - A x), into r.refined.
   Result
   measure(const SparseMatrix &A, const std::vector<dealii::types::global_dof_index> &interface,
           const Ordering ordering, const Vector &b, const Vector &x_exact,

@@ -106,9 +106,11 @@ main(int argc, char **argv)
     "Ground motion/Component y/Processing/Taper length=0.2",
     "Ground motion/Component y/Scale factor=2.5",
     "Time integration/End time=1.3",
-    // the full-rank factor, the reference the compressed run below is
-    // checked against (the case ships compressed)
+    // the full-rank factor in double, the reference the compressed and the
+    // single-precision runs below are checked against (the case ships with
+    // both)
     "Time integration/Low-rank tolerance=0",
+    "Time integration/Factor precision=double",
     "Output/Directory=paper_reduced",
     "Output/Field output interval=100",
     "Output/Progress=false",
