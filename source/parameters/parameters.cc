@@ -123,19 +123,20 @@ namespace archdam
                          "mixed (the monolithic reference solver holds the pairs at their "
                          "positions only): with Solver = monolithic, set Contact in time = "
                          "trapezoidal.");
-      // The compressed factor is the one condensed on the joints' pairs
-      // (time::CondensedFactorization); a case without it would ignore it.
-      if (p.time_integration.low_rank_tolerance > 0. &&
-          !(p.joints.frictional() && p.joints.solver == joints::Solver::mixed))
-        throw InputError("Time integration/Low-rank tolerance compresses the factor condensed on "
-                         "the joints' node pairs (Contraction joints/Model = frictional contact, "
-                         "Solver = mixed); this case has no such factor: set it to 0.");
+      // The compressed and the single-precision factor are the one
+      // condensed on the joints' pairs (time::CondensedFactorization); a
+      // case without it would ignore them.
+      const std::string condensed_only =
+        " the factor condensed on the joints' node pairs (Contraction joints/Model = "
+        "frictional contact, Solver = mixed); this case has no such factor: ";
+      const bool condensed = p.joints.frictional() && p.joints.solver == joints::Solver::mixed;
+      if (p.time_integration.low_rank_tolerance > 0. && !condensed)
+        throw InputError("Time integration/Low-rank tolerance compresses" + condensed_only +
+                         "set it to 0.");
       if (p.time_integration.factor_precision != time::FactorPrecision::double_precision &&
-          !(p.joints.frictional() && p.joints.solver == joints::Solver::mixed))
-        throw InputError("Time integration/Factor precision = single applies to the factor "
-                         "condensed on the joints' node pairs (Contraction joints/Model = "
-                         "frictional contact, Solver = mixed); this case has no such factor: "
-                         "set it to double.");
+          !condensed)
+        throw InputError("Time integration/Factor precision = single applies to" +
+                         condensed_only + "set it to double.");
       // The static loads are applied in the static stage only, and the
       // dynamic stage starts from its state: without it they would be lost.
       if (p.analysis.runs("dynamic") && !p.analysis.runs("static"))
