@@ -33,7 +33,7 @@
 // full-rank factor's, in the same scale as the error (the accuracy a step
 // would lose).
 //
-// Then the factor in single precision against double (time::FactorPrecision,
+// Then the factor in single precision against double (time::Precision,
 // `Time integration/Factor precision`) at each dropping tolerance of
 // --single (default 0, 1e-8, 1e-6; 0 is full rank): the same columns, the
 // error of each, and that of the single-precision factor after one step of
@@ -121,7 +121,7 @@ namespace
   measure(const SparseMatrix &A, const std::vector<dealii::types::global_dof_index> &interface,
           const Ordering ordering, const Vector &b, const Vector &x_exact,
           const unsigned int solves, Vector &x, const double low_rank = 0.,
-          const time::FactorPrecision precision = time::FactorPrecision::double_precision)
+          const time::Precision precision = time::Precision::double_precision)
   {
     Result        r;
     dealii::Timer timer;
@@ -352,7 +352,7 @@ main(int argc, char **argv)
         }
     }
 
-  // Single against double precision (time::FactorPrecision) at each
+  // Single against double precision (time::Precision) at each
   // tolerance of --single (0: full rank), one factor alive at a time.
   if (!single.empty())
     {
@@ -365,12 +365,12 @@ main(int argc, char **argv)
         {
           std::pair<Result, Result> pair;
           for (const auto precision :
-               {time::FactorPrecision::double_precision, time::FactorPrecision::single_precision})
+               {time::Precision::double_precision, time::Precision::single_precision})
             {
               Vector       x_p(b);
               const Result r = measure(A, interface, Ordering::nested_dissection, b, x_exact,
                                        solves, x_p, tolerance, precision);
-              const bool   in_single = precision == time::FactorPrecision::single_precision;
+              const bool   in_single = precision == time::Precision::single_precision;
               (in_single ? pair.second : pair.first) = r;
               std::ostringstream name;
               name << (in_single ? "single" : "double") << ", CNTL(7) = " << tolerance;

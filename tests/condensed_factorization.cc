@@ -243,7 +243,7 @@ namespace
                    << std::endl;
   }
 
-  /// The factor in single precision (time::FactorPrecision): half the
+  /// The factor in single precision (time::Precision): half the
   /// bytes of the double factor, its solves through sgemv (products of one
   /// column), and the solve of A x = b - q (the interface load q) and of a
   /// load on the interface alone against the double factor's: apart by
@@ -262,7 +262,7 @@ namespace
     using Ordering            = time::CondensedFactorization::Ordering;
     const time::CondensedFactorization full(A, !indefinite, gamma);
     const time::CondensedFactorization single(A, !indefinite, gamma, Ordering::nested_dissection,
-                                              0., time::FactorPrecision::single_precision);
+                                              0., time::Precision::single_precision);
     testing::check_below(name + ": the single-precision factor's memory against the double one's",
                          single.statistics().memory / full.statistics().memory, 0.6);
 

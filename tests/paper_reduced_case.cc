@@ -106,11 +106,12 @@ main(int argc, char **argv)
     "Ground motion/Component y/Processing/Taper length=0.2",
     "Ground motion/Component y/Scale factor=2.5",
     "Time integration/End time=1.3",
-    // the full-rank factor in double, the reference the compressed and the
-    // single-precision runs below are checked against (the case ships with
-    // both)
+    // the full-rank factor and the products in double, the reference the
+    // compressed and the single-precision runs below are checked against
+    // (the case ships with both)
     "Time integration/Low-rank tolerance=0",
     "Time integration/Factor precision=double",
+    "Time integration/Product precision=double",
     "Output/Directory=paper_reduced",
     "Output/Field output interval=100",
     "Output/Progress=false",
@@ -147,12 +148,12 @@ main(int argc, char **argv)
   testing::check_below("A's largest opening beyond the crown joint's peak in the summary [m]",
                        largest_at_a - number("dynamic|joints|joint 6|peak opening [m]"), 1e-12);
 
-  // The same run again with one setting changed (a second factorization of
+  // The same run again with settings changed (a second factorization of
   // the same matrix), its summary, and the largest relative difference of
   // the peaks above from the first run's.
-  const auto rerun = [&](const std::string &setting, const std::string &directory) {
+  const auto rerun = [&](const std::vector<std::string> &settings, const std::string &directory) {
     auto more = overrides;
-    more.push_back(setting);
+    more.insert(more.end(), settings.begin(), settings.end());
     more.push_back("Output/Directory=" + directory);
     {
       const Parameters     q = read_parameters(SOURCE_DIR "/../prm/paper_235m_dam.prm", more);
@@ -177,7 +178,7 @@ main(int argc, char **argv)
   // entries, and every peak above to 1e-6 (the compression's error, about
   // its tolerance times the growth over the 260 steps and the contact
   // problem's tolerances).
-  const auto c = rerun("Time integration/Low-rank tolerance=1e-8", "paper_reduced_low_rank");
+  const auto c = rerun({"Time integration/Low-rank tolerance=1e-8"}, "paper_reduced_low_rank");
   testing::check_below("low-rank factor: its entries against the full-rank factor's",
                        summary_number(c, "dynamic|factorization|factor entries") /
                          number("dynamic|factorization|factor entries"),
@@ -186,18 +187,22 @@ main(int argc, char **argv)
                        "relative difference",
                        largest_peak_difference(c), 1e-6);
 
-  // The factor in single precision (Time integration/Factor precision,
-  // doc/performance.md §8) against the double one: half the memory MUMPS
-  // uses, and every peak above to 1e-4 (each solve exact to about 1e-6 of
-  // the solution, the difference carried by the contact problem's states
-  // through the 260 steps; measured 4.0e-6).
-  const auto f = rerun("Time integration/Factor precision=single", "paper_reduced_single");
-  testing::check_below("single-precision factor: the memory MUMPS used against the double "
-                       "factor's",
+  // The factor and the effective load's products with M and D in single
+  // precision (Time integration/Factor precision and Product precision,
+  // doc/performance.md §8 and §11, as the case ships) against double: half
+  // the memory MUMPS uses, and every peak above to 1e-4 (each solve exact to
+  // about 1e-6 of the solution and each product's row to 6e-8 of its terms,
+  // the difference carried by the contact problem's states through the 260
+  // steps; measured 4.0e-6 with the factor alone in single).
+  const auto f = rerun({"Time integration/Factor precision=single",
+                        "Time integration/Product precision=single"},
+                       "paper_reduced_single");
+  testing::check_below("single-precision factor and products: the memory MUMPS used against "
+                       "the double factor's",
                        summary_number(f, "dynamic|factorization|memory [MB]") /
                          number("dynamic|factorization|memory [MB]"),
                        0.6);
-  testing::check_below("single-precision factor: the peaks above against the double run's, "
-                       "largest relative difference",
+  testing::check_below("single-precision factor and products: the peaks above against the "
+                       "double run's, largest relative difference",
                        largest_peak_difference(f), 1e-4);
 }

@@ -49,6 +49,8 @@ namespace archdam::analysis
     operators.mass      = coupled ? &coupled->mass : &model().mass();
     operators.stiffness = coupled ? &coupled->stiffness : &model().stiffness();
     operators.damping   = coupled ? &coupled->damping : model().damping();
+    if (operators.damping && integrator)
+      operators.damping_products = integrator->single_precision_products();
     operators.rayleigh  = p.damping.rayleigh_coefficients();
     operators.newmark   = p.time_integration;
     operators.fluid     = model().fluid();
@@ -296,6 +298,22 @@ namespace archdam::analysis
       integrator = make_integrator();
     }
     recorders.insert(recorders.begin(), make_energy_balance());
+    if (integrator->single_precision_products())
+      {
+        // The integrator holds M, D and the outer boundary's columns in
+        // single precision (doc/performance.md §11), and the energy balance
+        // has taken what it needs of the columns: the copied matrices that
+        // nothing multiplies any more are released.
+        if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
+          {
+            integrator->hold_prescribed_columns(*boundary);
+            for (SparseMatrix *A : {&boundary->mass_columns, &boundary->stiffness_columns,
+                                    &boundary->damping_columns})
+              A->clear();
+          }
+        if (coupled)
+          coupled->damping.clear();
+      }
     screen << "  factors: " << std::setprecision(4) << integrator->effective_factor().factor_entries()
            << " entries" << std::endl;
     if (model().joint_pairs())
@@ -538,11 +556,16 @@ namespace archdam::analysis
       summary.set(s + "water G, H, Q, S, S^T",
                   megabytes({&water->G, &water->H, &water->Q, &water->S, &water->S_transpose}));
     if (coupled)
-      summary.set(s + "coupled M, D, K",
+      summary.set(s + (coupled->damping.m() > 0 ? "coupled M, D, K" : "coupled M, K"),
                   megabytes({&coupled->mass, &coupled->damping, &coupled->stiffness}));
+    if (integrator && integrator->single_precision_products())
+      summary.set(s + "effective load's products in single precision",
+                  1e-6 * Utilities::MPI::sum(static_cast<double>(integrator->single_precision_memory()),
+                                             comm));
     if (integrator && integrator->effective().m() > 0)
       summary.set(s + "effective matrix", megabytes({&integrator->effective()}));
-    if (const auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
+    if (const auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr;
+        boundary && boundary->mass_columns.m() > 0)
       summary.set(s + "outer boundary columns",
                   megabytes({&boundary->mass_columns, &boundary->stiffness_columns,
                              &boundary->damping_columns}));

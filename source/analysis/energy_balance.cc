@@ -194,8 +194,7 @@ namespace archdam::analysis
   }
 
   void
-  EnergyBalance::full_product(const SparseMatrix &A, const Operator which, const Vector &x,
-                              Vector &out) const
+  EnergyBalance::full_product(const Operator which, const Vector &x, Vector &out) const
   {
     // A x for the full (unconstrained) solid operator, x from free_part():
     // the condensed A on the free entries, and with a prescribed boundary b
@@ -213,7 +212,11 @@ namespace archdam::analysis
         solid_part.scale(solid_mask);
         solid = &solid_part;
       }
-    A.vmult(out, *solid);
+    if (which == Operator::damping && m.damping_products != nullptr)
+      m.damping_products->vmult(1, *solid, out);
+    else
+      (which == Operator::mass ? *m.mass : which == Operator::stiffness ? *m.stiffness : *m.damping)
+        .vmult(out, *solid);
     out.scale(free_mask);
     if (rows)
       {
@@ -234,14 +237,14 @@ namespace archdam::analysis
     // the solid's block of D_c, the water's radiation being counted apart.
     if (m.damping)
       {
-        full_product(*m.damping, Operator::damping, v, out);
+        full_product(Operator::damping, v, out);
         return;
       }
-    full_product(*m.mass, Operator::mass, v, out);
+    full_product(Operator::mass, v, out);
     out *= m.rayleigh.first;
     if (m.rayleigh.second != 0.)
       {
-        full_product(*m.stiffness, Operator::stiffness, v, tmp2);
+        full_product(Operator::stiffness, v, tmp2);
         out.add(m.rayleigh.second, tmp2);
       }
   }
@@ -288,7 +291,7 @@ namespace archdam::analysis
     if (dissipative())
       {
         free_part(s.a, a_prev);
-        full_product(*m.mass, Operator::mass, a_prev, inertia_prev);
+        full_product(Operator::mass, a_prev, inertia_prev);
       }
     correction_residual = 0.;
     p_prev  = 0.;
@@ -358,7 +361,7 @@ namespace archdam::analysis
     correction_residual = 0.;
     if (corrected_w)
       {
-        full_product(*m.stiffness, Operator::stiffness, tmp, correction_residual);
+        full_product(Operator::stiffness, tmp, correction_residual);
         Vector w(u_prev);
         w -= u_static;
         sums.correction += correction_residual * w - 0.5 * (correction_residual * tmp);
@@ -530,7 +533,7 @@ namespace archdam::analysis
     // one product M a_{n+1} a step, M a_n kept from the step before.
     const double b1 = m.newmark.beta1, b2 = m.newmark.beta2;
     free_part(s.a, mean);
-    full_product(*m.mass, Operator::mass, mean, jump); // M a_{n+1}
+    full_product(Operator::mass, mean, jump); // M a_{n+1}
     mean += a_prev;
     mean *= 0.5;                                         // <a>
     a_prev.sadd(-1., 2., mean);                          // a_{n+1}
@@ -549,10 +552,10 @@ namespace archdam::analysis
   {
     EnergyTerms e = sums;
     Vector      w(u_prev), Ax(u_prev);
-    full_product(*m.mass, Operator::mass, v_prev, Ax);
+    full_product(Operator::mass, v_prev, Ax);
     e.kinetic = 0.5 * (Ax * v_prev);
     w -= u_static;
-    full_product(*m.stiffness, Operator::stiffness, w, Ax);
+    full_product(Operator::stiffness, w, Ax);
     e.strain = 0.5 * (Ax * w);
     for (unsigned int k = 0; k < f_static.size(); ++k)
       e.strain -= f_static[k] * (w_prev[k] - w_static[k]);

@@ -133,7 +133,7 @@ namespace archdam
       if (p.time_integration.low_rank_tolerance > 0. && !condensed)
         throw InputError("Time integration/Low-rank tolerance compresses" + condensed_only +
                          "set it to 0.");
-      if (p.time_integration.factor_precision != time::FactorPrecision::double_precision &&
+      if (p.time_integration.factor_precision != time::Precision::double_precision &&
           !condensed)
         throw InputError("Time integration/Factor precision = single applies to" +
                          condensed_only + "set it to double.");

@@ -101,7 +101,7 @@ namespace archdam::time
   CondensedFactorization::CondensedFactorization(
     const SparseMatrix &A, const bool positive_definite,
     const std::vector<dealii::types::global_dof_index> &interface, const Ordering ordering,
-    const double low_rank_tolerance, const FactorPrecision precision)
+    const double low_rank_tolerance, const Precision precision)
     : gamma(interface)
   {
     // The interface (NodePairs::interface()): sorted, unique, rows of A.
@@ -111,7 +111,7 @@ namespace archdam::time
                 ExcMessage("The condensed interface must be sorted, unique DOFs of the matrix."));
     AssertThrow(low_rank_tolerance >= 0.,
                 ExcMessage("The low-rank tolerance of a factorization must not be negative."));
-    if (precision == FactorPrecision::single_precision)
+    if (precision == Precision::single_precision)
       factorize(*mumps.emplace<std::unique_ptr<Mumps<float>>>(std::make_unique<Mumps<float>>()),
                 A, positive_definite, ordering, low_rank_tolerance);
     else

@@ -18,7 +18,7 @@ namespace archdam::time
   FactorizedOperator::factorize(const SparseMatrix &A, const bool positive_definite,
                                 const std::vector<types::global_dof_index> &interface,
                                 const double          low_rank_tolerance,
-                                const FactorPrecision precision)
+                                const Precision precision)
   {
     if (interface.empty())
       factorize(static_cast<Mat>(A), positive_definite);

@@ -34,13 +34,20 @@ namespace archdam::time
                       "tolerance (doc/performance.md §8). For frictional joints with the "
                       "mixed solver, whose factor is condensed on the node pairs.",
                       Patterns::Double(0., 1e-3));
-    add_selection(prm, "Factor precision", factor_precision, factor_precision_names(),
+    add_selection(prm, "Factor precision", factor_precision, precision_names(),
                   "The arithmetic of the factor of the effective matrix: double, or single "
                   "(the factor's bytes halved, and the steps' substitutions about 0.6 of "
                   "their time in double; each solve then exact to about 1e-5 of the "
                   "solution in the unknowns' own scale, doc/performance.md §8). For "
                   "frictional joints with the mixed solver, whose factor is condensed on the "
                   "node pairs.");
+    add_selection(prm, "Product precision", product_precision, precision_names(),
+                  "The arithmetic of the entries of M and D, and of the prescribed outer "
+                  "boundary's columns, in each step's effective load: double, or single (one "
+                  "pass over their entries, each read in single precision: these products then "
+                  "take about half their time in double, each row exact to 6e-8 of the sum of "
+                  "its terms' magnitudes; K's product, which carries the static state's "
+                  "forces, stays in double; doc/performance.md §11).");
   }
 
   void
@@ -139,6 +146,10 @@ namespace archdam::time
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
                       &reduced_load})
       v->reinit(owned, M.get_mpi_communicator());
+    if (p.product_precision == Precision::single_precision)
+      load_products = std::make_unique<SinglePrecisionProducts>(
+        D != nullptr ? std::vector<const SparseMatrix *>{&M, D} :
+                       std::vector<const SparseMatrix *>{&M});
   }
 
   void
@@ -180,17 +191,24 @@ namespace archdam::time
     rhs = load_next;
     tmp = s.a;
     tmp.add(alpha, vp);
-    M.vmult(da, tmp);
-    rhs -= da;
+    if (load_products)
+      load_products->subtract_from(D != nullptr ? std::vector<const Vector *>{&tmp, &vp} :
+                                                  std::vector<const Vector *>{&tmp},
+                                   rhs);
+    else
+      {
+        M.vmult(da, tmp);
+        rhs -= da;
+        if (D != nullptr)
+          {
+            D->vmult(da, vp);
+            rhs -= da;
+          }
+      }
     tmp = up;
     tmp.add(beta, vp);
     K.vmult(da, tmp);
     rhs -= da;
-    if (D != nullptr)
-      {
-        D->vmult(da, vp);
-        rhs -= da;
-      }
     if (dashpots)
       {
         tmp = vp;
@@ -221,6 +239,26 @@ namespace archdam::time
     tmp = x;
     constraints.distribute(tmp);
     s.u.add(p.beta2 * dt * dt, tmp);
+  }
+
+  std::vector<const SparseMatrix *>
+  NewmarkIntegrator::columns_of_matrices(const PrescribedDofs &prescribed) const
+  {
+    if (D == nullptr)
+      return {&prescribed.mass_columns, &prescribed.stiffness_columns};
+    AssertThrow(prescribed.damping_columns.m() == M.m(),
+                ExcMessage("Prescribed DOFs with a general damping matrix need the "
+                           "columns of that matrix (PrescribedDofs::damping_columns)."));
+    return {&prescribed.mass_columns, &prescribed.stiffness_columns, &prescribed.damping_columns};
+  }
+
+  void
+  NewmarkIntegrator::hold_prescribed_columns(const PrescribedDofs &prescribed)
+  {
+    if (p.product_precision != Precision::single_precision)
+      return;
+    column_products = std::make_unique<SinglePrecisionProducts>(columns_of_matrices(prescribed));
+    columns_of      = &prescribed;
   }
 
   void
@@ -256,18 +294,25 @@ namespace archdam::time
     for (Vector *v : {&prescribed_a, &prescribed_v, &prescribed_u})
       v->compress(VectorOperation::insert);
 
+    // M's, K's and (a general damping matrix's own) D's columns
+    std::vector<const Vector *> column_vectors{&prescribed_a, &prescribed_u};
+    if (D != nullptr)
+      column_vectors.push_back(&prescribed_v);
     reduced_load = load_next;
-    prescribed.mass_columns.vmult(tmp, prescribed_a);
-    reduced_load -= tmp;
-    prescribed.stiffness_columns.vmult(tmp, prescribed_u);
-    reduced_load -= tmp;
-    if (D != nullptr) // a general damping matrix: its own columns
+    if (p.product_precision == Precision::single_precision)
       {
-        AssertThrow(prescribed.damping_columns.m() == M.m(),
-                    ExcMessage("Prescribed DOFs with a general damping matrix need the "
-                               "columns of that matrix (PrescribedDofs::damping_columns)."));
-        prescribed.damping_columns.vmult(tmp, prescribed_v);
-        reduced_load -= tmp;
+        if (columns_of != &prescribed)
+          hold_prescribed_columns(prescribed);
+        column_products->subtract_from(column_vectors, reduced_load);
+      }
+    else
+      {
+        const auto columns = columns_of_matrices(prescribed);
+        for (unsigned int k = 0; k < columns.size(); ++k)
+          {
+            columns[k]->vmult(tmp, *column_vectors[k]);
+            reduced_load -= tmp;
+          }
       }
     advance(reduced_load, s, solve);
 

@@ -133,6 +133,11 @@ namespace archdam::analysis
       /// product a step. Null: the two products alpha M v + beta K v with
       /// `rayleigh`.
       const SparseMatrix                        *damping = nullptr;
+      /// With `damping`: its products from the integrator's copy in single
+      /// precision (matrix 1, Time integration/Product precision = single);
+      /// `damping` itself is then not multiplied (the dynamic stage releases
+      /// its entries).
+      const time::SinglePrecisionProducts       *damping_products = nullptr;
       std::pair<double, double>                  rayleigh{0., 0.};
       time::NewmarkParameters                    newmark;
       /// M iota_d of the relative formulation (massless or rigid foundation).
@@ -214,11 +219,11 @@ namespace archdam::analysis
       stiffness,
       damping
     };
-    /// The full solid operator (condensed @p A plus its prescribed
+    /// The full solid operator @p which (condensed, plus its prescribed
     /// columns, if any) times the solid part of x from free_part();
     /// solid rows only.
     void
-    full_product(const SparseMatrix &A, Operator which, const Vector &x, Vector &out) const;
+    full_product(Operator which, const Vector &x, Vector &out) const;
     /// D v = alpha M v + beta K v (full operators; Model::damping if given).
     void
     damping_force(const Vector &v, Vector &out) const;

@@ -12,11 +12,12 @@
 
 namespace archdam::time
 {
-  /// The arithmetic in which a sparse factor is computed, held and applied
-  /// (doc/performance.md §8): single precision halves the factor's bytes
-  /// and so the memory traffic of the substitutions, at a solve error of
-  /// about the condition number times 6e-8.
-  enum class FactorPrecision
+  /// The arithmetic in which a stored operator is held and applied: a
+  /// sparse factor (doc/performance.md §8: single precision halves the
+  /// factor's bytes and so the memory traffic of the substitutions, at a
+  /// solve error of about the condition number times 6e-8), or the entries
+  /// of the matrices in a step's effective load (§11).
+  enum class Precision
   {
     double_precision,
     single_precision
@@ -64,7 +65,7 @@ namespace archdam::time
                            const std::vector<dealii::types::global_dof_index> &interface,
                            Ordering        ordering           = Ordering::nested_dissection,
                            double          low_rank_tolerance = 0.,
-                           FactorPrecision precision          = FactorPrecision::double_precision);
+                           Precision precision          = Precision::double_precision);
     ~CondensedFactorization();
     CondensedFactorization(const CondensedFactorization &) = delete;
     CondensedFactorization &

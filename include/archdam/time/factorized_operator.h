@@ -39,7 +39,7 @@ namespace archdam::time
     factorize(const SparseMatrix &A, bool positive_definite,
               const std::vector<dealii::types::global_dof_index> &interface = {},
               double          low_rank_tolerance = 0.,
-              FactorPrecision precision          = FactorPrecision::double_precision);
+              Precision precision          = Precision::double_precision);
 
     /// The same for a matrix PETSc holds directly (kept referenced by PETSc).
     void

@@ -3,23 +3,25 @@
 #include <archdam/base/selection.h>
 #include <archdam/base/types.h>
 #include <archdam/time/factorized_operator.h>
+#include <archdam/time/single_precision_products.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace archdam::time
 {
-  /// The names of FactorPrecision in the case file (`Time integration/Factor
-  /// precision`).
-  inline const SelectionNames<FactorPrecision> &
-  factor_precision_names()
+  /// The names of Precision in the case file (`Time integration/Factor
+  /// precision` and `Product precision`).
+  inline const SelectionNames<Precision> &
+  precision_names()
   {
-    static const SelectionNames<FactorPrecision> names{
-      {"double", FactorPrecision::double_precision},
-      {"single", FactorPrecision::single_precision}};
+    static const SelectionNames<Precision> names{
+      {"double", Precision::double_precision},
+      {"single", Precision::single_precision}};
     return names;
   }
 
@@ -34,7 +36,10 @@ namespace archdam::time
     /// factor (0: full rank; doc/performance.md §8).
     double low_rank_tolerance = 0.;
     /// The arithmetic of that factor (doc/performance.md §8).
-    FactorPrecision factor_precision = FactorPrecision::double_precision;
+    Precision factor_precision = Precision::double_precision;
+    /// The arithmetic of M's and D's entries (and the prescribed boundary's
+    /// columns') in the steps' effective load (doc/performance.md §11).
+    Precision product_precision = Precision::double_precision;
 
     void
     add_parameters(dealii::ParameterHandler &prm);
@@ -92,6 +97,10 @@ namespace archdam::time
    * and updates u = u^p + beta2 dt^2 da, v = v^p + beta1 dt da, a = a_n + da.
    * Kbar is constant: it is assembled and factorized once in the constructor,
    * and a step costs two matrix-vector products and one back-substitution.
+   * With `Product precision = single` the products with M (and D, and the
+   * prescribed boundary's columns) take their entries in single precision
+   * (SinglePrecisionProducts); K's product, which carries the static
+   * state's forces, stays in double (doc/performance.md §11).
    * Optional @p boundary_dashpots c (a diagonal damping, the viscous boundary
    * of the foundation) add beta1 dt diag(c) to Kbar and c v^p to the load.
    * With a @p factor_interface (the joints' pair DOFs) Kbar's factorization
@@ -157,6 +166,31 @@ namespace archdam::time
             const PrescribedDofs      &prescribed,
             const std::vector<double> &u_next,
             const StepSolver          &solve = {});
+
+    /**
+     * With Product precision = single: hold @p prescribed's columns in
+     * single precision now (advance() with @p prescribed otherwise does it
+     * at its first step); from then on advance() reads only these, and the
+     * columns' own matrices may be released.
+     */
+    void
+    hold_prescribed_columns(const PrescribedDofs &prescribed);
+
+    /// With Product precision = single, the products of M (matrix 0) and of
+    /// a general damping matrix D (matrix 1) in single precision; null
+    /// otherwise.
+    const SinglePrecisionProducts *
+    single_precision_products() const
+    {
+      return load_products.get();
+    }
+    /// What the products in single precision hold on this rank [bytes].
+    std::size_t
+    single_precision_memory() const
+    {
+      return (load_products ? load_products->memory() : 0) +
+             (column_products ? column_products->memory() : 0);
+    }
 
     /**
      * Move the displacements of the step just advanced by @p x, the
@@ -231,6 +265,10 @@ namespace archdam::time
     const Vector                            *dashpots = nullptr; // boundary dashpots, if any
     Vector                                   up, vp, rhs, tmp, da;
     Vector prescribed_a, prescribed_v, prescribed_u, reduced_load;
+    /// With Product precision = single: M and D in single precision, and
+    /// the columns of the prescribed DOFs (built at their first step).
+    std::unique_ptr<SinglePrecisionProducts> load_products, column_products;
+    const PrescribedDofs                    *columns_of = nullptr;
 
     /// What both public constructors set (@p damping null: Rayleigh damping
     /// from @p rayleigh); each then builds its own effective operator.
@@ -242,6 +280,9 @@ namespace archdam::time
                       const dealii::AffineConstraints<double> &constraints,
                       const Vector                            *boundary_dashpots);
 
+    /// The columns of M, K (and D) at the prescribed DOFs, in that order.
+    std::vector<const SparseMatrix *>
+    columns_of_matrices(const PrescribedDofs &prescribed) const;
     /// Add beta1 dt diag(dashpots) to Kbar (the viscous boundary).
     void
     add_dashpots_to_effective_matrix();

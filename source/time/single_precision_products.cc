@@ -1,0 +1,194 @@
+#include <archdam/base/petsc_check.h>
+#include <archdam/time/single_precision_products.h>
+
+#include <petscmat.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace archdam::time
+{
+  using namespace dealii;
+
+  namespace
+  {
+    /// y_i -= sum over the row's entries of sum_k v_k x_k, K matrices.
+    template <unsigned int K>
+    void
+    subtract_rows(const PetscInt n_rows, const std::uint64_t *row_start,
+                  const std::uint32_t *columns, const float *values, const double *x, double *y)
+    {
+      for (PetscInt i = 0; i < n_rows; ++i)
+        {
+          double sum = 0.;
+          for (std::uint64_t e = row_start[i]; e < row_start[i + 1]; ++e)
+            {
+              const double *xc = x + static_cast<std::size_t>(columns[e]) * K;
+              const float  *v  = values + e * K;
+              for (unsigned int k = 0; k < K; ++k)
+                sum += static_cast<double>(v[k]) * xc[k];
+            }
+          y[i] -= sum;
+        }
+    }
+  } // namespace
+
+  SinglePrecisionProducts::SinglePrecisionProducts(
+    const std::vector<const SparseMatrix *> &matrices)
+    : n_matrices(matrices.size())
+  {
+    AssertThrow(n_matrices >= 1 && n_matrices <= 3,
+                ExcMessage("SinglePrecisionProducts sums the products of one to three matrices."));
+    PetscInt last_row = 0;
+    petsc_check(MatGetOwnershipRange(static_cast<Mat>(*matrices[0]), &first_row, &last_row));
+    n_rows = last_row - first_row;
+    for (const SparseMatrix *A : matrices)
+      {
+        PetscInt a = 0, b = 0;
+        petsc_check(MatGetOwnershipRange(static_cast<Mat>(*A), &a, &b));
+        AssertThrow(a == first_row && b == last_row && A->m() == matrices[0]->m() &&
+                      A->n() == matrices[0]->n(),
+                    ExcMessage("SinglePrecisionProducts: the matrices differ in size or in "
+                               "their rows' distribution."));
+      }
+    AssertThrow(matrices[0]->n() < std::numeric_limits<std::uint32_t>::max(),
+                ExcMessage("SinglePrecisionProducts holds columns in 32 bits."));
+
+    // The union of the rows' patterns, global columns first (a row's
+    // columns come sorted from MatGetRow), the ghosts numbered after.
+    struct Entry
+    {
+      PetscInt     column;
+      unsigned int matrix;
+      double       value;
+    };
+    std::vector<Entry>    row;
+    std::vector<PetscInt> ghosts;
+    MatInfo               info;
+    petsc_check(MatGetInfo(static_cast<Mat>(*matrices[0]), MAT_LOCAL, &info));
+    columns.reserve(static_cast<std::size_t>(info.nz_used));
+    values.reserve(static_cast<std::size_t>(info.nz_used) * n_matrices);
+    row_start.reserve(n_rows + 1);
+    row_start.push_back(0);
+    for (PetscInt i = first_row; i < last_row; ++i)
+      {
+        row.clear();
+        for (unsigned int k = 0; k < n_matrices; ++k)
+          {
+            const Mat          A = static_cast<Mat>(*matrices[k]);
+            PetscInt           n = 0;
+            const PetscInt    *c = nullptr;
+            const PetscScalar *v = nullptr;
+            petsc_check(MatGetRow(A, i, &n, &c, &v));
+            for (PetscInt j = 0; j < n; ++j)
+              if (v[j] != 0.)
+                row.push_back({c[j], k, v[j]});
+            petsc_check(MatRestoreRow(A, i, &n, &c, &v));
+          }
+        std::stable_sort(row.begin(), row.end(),
+                         [](const Entry &a, const Entry &b) { return a.column < b.column; });
+        for (std::size_t j = 0; j < row.size(); ++j)
+          {
+            if (j == 0 || row[j].column != row[j - 1].column)
+              {
+                columns.push_back(static_cast<std::uint32_t>(row[j].column));
+                values.resize(values.size() + n_matrices, 0.f);
+                if (row[j].column < first_row || row[j].column >= last_row)
+                  ghosts.push_back(row[j].column);
+              }
+            values[values.size() - n_matrices + row[j].matrix] = static_cast<float>(row[j].value);
+          }
+        row_start.push_back(columns.size());
+      }
+    std::sort(ghosts.begin(), ghosts.end());
+    ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+    for (auto &c : columns)
+      c = static_cast<PetscInt>(c) >= first_row && static_cast<PetscInt>(c) < last_row ?
+            c - first_row :
+            n_rows + (std::lower_bound(ghosts.begin(), ghosts.end(), c) - ghosts.begin());
+    columns.shrink_to_fit();
+    values.shrink_to_fit();
+    interleaved.resize((n_rows + ghosts.size()) * n_matrices);
+
+    n_ghosts = static_cast<PetscInt>(ghosts.size());
+    Vec model_vector;
+    petsc_check(MatCreateVecs(static_cast<Mat>(*matrices[0]), &model_vector, nullptr));
+    IS from;
+    petsc_check(ISCreateGeneral(PETSC_COMM_SELF, static_cast<PetscInt>(ghosts.size()),
+                                ghosts.data(), PETSC_COPY_VALUES, &from));
+    petsc_check(VecCreateSeq(PETSC_COMM_SELF, n_ghosts, &ghost_values));
+    petsc_check(VecScatterCreate(model_vector, from, ghost_values, nullptr, &ghost_scatter));
+    petsc_check(ISDestroy(&from));
+    petsc_check(VecDestroy(&model_vector));
+  }
+
+  SinglePrecisionProducts::~SinglePrecisionProducts()
+  {
+    if (ghost_scatter != nullptr)
+      VecScatterDestroy(&ghost_scatter);
+    if (ghost_values != nullptr)
+      VecDestroy(&ghost_values);
+  }
+
+  std::size_t
+  SinglePrecisionProducts::memory() const
+  {
+    return row_start.size() * sizeof(std::uint64_t) + columns.size() * sizeof(std::uint32_t) +
+           values.size() * sizeof(float) + interleaved.size() * sizeof(double);
+  }
+
+  void
+  SinglePrecisionProducts::gather(const unsigned int k, const Vector &x) const
+  {
+    const Vec          xk = static_cast<const Vec &>(x);
+    const PetscScalar *owned;
+    petsc_check(VecGetArrayRead(xk, &owned));
+    for (PetscInt i = 0; i < n_rows; ++i)
+      interleaved[i * n_matrices + k] = owned[i];
+    petsc_check(VecRestoreArrayRead(xk, &owned));
+    petsc_check(VecScatterBegin(ghost_scatter, xk, ghost_values, INSERT_VALUES, SCATTER_FORWARD));
+    petsc_check(VecScatterEnd(ghost_scatter, xk, ghost_values, INSERT_VALUES, SCATTER_FORWARD));
+    const PetscScalar *ghost;
+    petsc_check(VecGetArrayRead(ghost_values, &ghost));
+    for (PetscInt g = 0; g < n_ghosts; ++g)
+      interleaved[(n_rows + g) * n_matrices + k] = ghost[g];
+    petsc_check(VecRestoreArrayRead(ghost_values, &ghost));
+  }
+
+  void
+  SinglePrecisionProducts::subtract_gathered(Vector &y) const
+  {
+    PetscScalar *out;
+    petsc_check(VecGetArray(static_cast<const Vec &>(y), &out));
+    const auto run = [&](auto kernel) {
+      kernel(n_rows, row_start.data(), columns.data(), values.data(), interleaved.data(), out);
+    };
+    if (n_matrices == 1)
+      run(subtract_rows<1>);
+    else if (n_matrices == 2)
+      run(subtract_rows<2>);
+    else
+      run(subtract_rows<3>);
+    petsc_check(VecRestoreArray(static_cast<const Vec &>(y), &out));
+  }
+
+  void
+  SinglePrecisionProducts::subtract_from(const std::vector<const Vector *> &x, Vector &y) const
+  {
+    AssertDimension(x.size(), n_matrices);
+    for (unsigned int k = 0; k < n_matrices; ++k)
+      gather(k, *x[k]);
+    subtract_gathered(y);
+  }
+
+  void
+  SinglePrecisionProducts::vmult(const unsigned int k, const Vector &x, Vector &y) const
+  {
+    AssertIndexRange(k, n_matrices);
+    std::fill(interleaved.begin(), interleaved.end(), 0.);
+    gather(k, x);
+    y = 0.;
+    subtract_gathered(y);
+    y *= -1.;
+  }
+} // namespace archdam::time
