@@ -297,23 +297,6 @@ namespace archdam::analysis
       TimerOutput::Scope t(timer, "dynamic: factorization");
       integrator = make_integrator();
     }
-    recorders.insert(recorders.begin(), make_energy_balance());
-    if (integrator->single_precision_products())
-      {
-        // The integrator holds M, D and the outer boundary's columns in
-        // single precision (doc/performance.md §11), and the energy balance
-        // has taken what it needs of the columns: the copied matrices that
-        // nothing multiplies any more are released.
-        if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
-          {
-            integrator->hold_prescribed_columns(*boundary);
-            for (SparseMatrix *A : {&boundary->mass_columns, &boundary->stiffness_columns,
-                                    &boundary->damping_columns})
-              A->clear();
-          }
-        if (coupled)
-          coupled->damping.clear();
-      }
     screen << "  factors: " << std::setprecision(4) << integrator->effective_factor().factor_entries()
            << " entries" << std::endl;
     if (model().joint_pairs())
@@ -322,6 +305,23 @@ namespace archdam::analysis
     // refactorizes it): a matrix the size of K less to hold.
     if (!joint_solver || !joint_solver->uses_matrix())
       integrator->release_effective_matrix();
+    // With the effective load's products in single precision the integrator
+    // copies M, D and the outer boundary's columns now, Kbar's memory given
+    // back (doc/performance.md §11); once the energy balance has taken the
+    // boundary's rows it needs, the matrices nothing else multiplies are
+    // released (the balance takes D v from the copy).
+    auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr;
+    integrator->hold_in_single_precision(boundary);
+    recorders.insert(recorders.begin(), make_energy_balance());
+    if (integrator->single_precision_products())
+      {
+        if (boundary)
+          for (SparseMatrix *A : {&boundary->mass_columns, &boundary->stiffness_columns,
+                                  &boundary->damping_columns})
+            A->clear();
+        if (coupled)
+          coupled->damping.clear();
+      }
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
            << " 1/s, beta = " << rayleigh.second << " s";

@@ -146,10 +146,23 @@ namespace archdam::time
     for (Vector *v : {&up, &vp, &rhs, &tmp, &da, &prescribed_a, &prescribed_v, &prescribed_u,
                       &reduced_load})
       v->reinit(owned, M.get_mpi_communicator());
-    if (p.product_precision == Precision::single_precision)
+  }
+
+  void
+  NewmarkIntegrator::hold_in_single_precision(const PrescribedDofs *prescribed)
+  {
+    if (p.product_precision != Precision::single_precision)
+      return;
+    if (!load_products)
       load_products = std::make_unique<SinglePrecisionProducts>(
         D != nullptr ? std::vector<const SparseMatrix *>{&M, D} :
                        std::vector<const SparseMatrix *>{&M});
+    if (prescribed != nullptr && columns_of != prescribed)
+      {
+        column_products =
+          std::make_unique<SinglePrecisionProducts>(columns_of_matrices(*prescribed));
+        columns_of = prescribed;
+      }
   }
 
   void
@@ -191,6 +204,7 @@ namespace archdam::time
     rhs = load_next;
     tmp = s.a;
     tmp.add(alpha, vp);
+    hold_in_single_precision(nullptr);
     if (load_products)
       load_products->subtract_from(D != nullptr ? std::vector<const Vector *>{&tmp, &vp} :
                                                   std::vector<const Vector *>{&tmp},
@@ -253,15 +267,6 @@ namespace archdam::time
   }
 
   void
-  NewmarkIntegrator::hold_prescribed_columns(const PrescribedDofs &prescribed)
-  {
-    if (p.product_precision != Precision::single_precision)
-      return;
-    column_products = std::make_unique<SinglePrecisionProducts>(columns_of_matrices(prescribed));
-    columns_of      = &prescribed;
-  }
-
-  void
   NewmarkIntegrator::advance(const Vector              &load_next,
                              NewmarkState              &s,
                              const PrescribedDofs      &prescribed,
@@ -301,8 +306,7 @@ namespace archdam::time
     reduced_load = load_next;
     if (p.product_precision == Precision::single_precision)
       {
-        if (columns_of != &prescribed)
-          hold_prescribed_columns(prescribed);
+        hold_in_single_precision(&prescribed);
         column_products->subtract_from(column_vectors, reduced_load);
       }
     else

@@ -168,13 +168,14 @@ namespace archdam::time
             const StepSolver          &solve = {});
 
     /**
-     * With Product precision = single: hold @p prescribed's columns in
-     * single precision now (advance() with @p prescribed otherwise does it
-     * at its first step); from then on advance() reads only these, and the
-     * columns' own matrices may be released.
+     * With Product precision = single: copy M and D, and @p prescribed's
+     * columns if given, into single precision now (advance() does it at its
+     * first step otherwise). From then on advance() reads only the copies
+     * (and K): the copied matrices may be released. Called once Kbar is
+     * released, the copies do not add to the memory Kbar held.
      */
     void
-    hold_prescribed_columns(const PrescribedDofs &prescribed);
+    hold_in_single_precision(const PrescribedDofs *prescribed);
 
     /// With Product precision = single, the products of M (matrix 0) and of
     /// a general damping matrix D (matrix 1) in single precision; null
@@ -266,7 +267,7 @@ namespace archdam::time
     Vector                                   up, vp, rhs, tmp, da;
     Vector prescribed_a, prescribed_v, prescribed_u, reduced_load;
     /// With Product precision = single: M and D in single precision, and
-    /// the columns of the prescribed DOFs (built at their first step).
+    /// the columns of the prescribed DOFs (hold_in_single_precision()).
     std::unique_ptr<SinglePrecisionProducts> load_products, column_products;
     const PrescribedDofs                    *columns_of = nullptr;
 
