@@ -306,21 +306,23 @@ namespace archdam::analysis
     if (!joint_solver || !joint_solver->uses_matrix())
       integrator->release_effective_matrix();
     // With the effective load's products in single precision the integrator
-    // copies M, D and the outer boundary's columns now, Kbar's memory given
-    // back (doc/performance.md §11); once the energy balance has taken the
-    // boundary's rows it needs, the matrices nothing else multiplies are
-    // released (the balance takes D v from the copy).
-    auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr;
-    integrator->hold_in_single_precision(boundary);
+    // copies M and D now, Kbar's memory given back (doc/performance.md §11);
+    // the energy balance takes D v from the copy and the boundary's rows it
+    // needs from the columns, and then the coupled D goes, and the columns
+    // are copied and go: one matrix copied beside its original at a time.
+    integrator->hold_in_single_precision(nullptr);
     recorders.insert(recorders.begin(), make_energy_balance());
     if (integrator->single_precision_products())
       {
-        if (boundary)
-          for (SparseMatrix *A : {&boundary->mass_columns, &boundary->stiffness_columns,
-                                  &boundary->damping_columns})
-            A->clear();
         if (coupled)
           coupled->damping.clear();
+        if (auto *boundary = foundation() ? foundation()->prescribed_dofs() : nullptr)
+          {
+            integrator->hold_in_single_precision(boundary);
+            for (SparseMatrix *A : {&boundary->mass_columns, &boundary->stiffness_columns,
+                                    &boundary->damping_columns})
+              A->clear();
+          }
       }
     screen << "Dynamic stage: " << n_steps << " steps of " << dt << " s to t = "
            << n_steps * dt << " s (Rayleigh alpha = " << rayleigh.first
