@@ -55,50 +55,62 @@ namespace archdam::time
                 ExcMessage("SinglePrecisionProducts holds columns in 32 bits."));
 
     // The union of the rows' patterns, global columns first (a row's
-    // columns come sorted from MatGetRow), the ghosts numbered after.
+    // columns come sorted from MatGetRow), the ghosts numbered after; sized
+    // by a first pass over the rows, so that nothing is held twice.
     struct Entry
     {
       PetscInt     column;
       unsigned int matrix;
       double       value;
     };
-    std::vector<Entry>    row;
-    std::vector<PetscInt> ghosts;
-    MatInfo               info;
-    petsc_check(MatGetInfo(static_cast<Mat>(*matrices[0]), MAT_LOCAL, &info));
-    columns.reserve(static_cast<std::size_t>(info.nz_used));
-    values.reserve(static_cast<std::size_t>(info.nz_used) * n_matrices);
+    std::vector<Entry> row;
+    const auto         merge_row = [&](const PetscInt i) {
+      row.clear();
+      for (unsigned int k = 0; k < n_matrices; ++k)
+        {
+          const Mat          A = static_cast<Mat>(*matrices[k]);
+          PetscInt           n = 0;
+          const PetscInt    *c = nullptr;
+          const PetscScalar *v = nullptr;
+          petsc_check(MatGetRow(A, i, &n, &c, &v));
+          for (PetscInt j = 0; j < n; ++j)
+            if (v[j] != 0.)
+              row.push_back({c[j], k, v[j]});
+          petsc_check(MatRestoreRow(A, i, &n, &c, &v));
+        }
+      std::stable_sort(row.begin(), row.end(),
+                       [](const Entry &a, const Entry &b) { return a.column < b.column; });
+    };
+    const auto new_column = [&](const std::size_t j) {
+      return j == 0 || row[j].column != row[j - 1].column;
+    };
     row_start.reserve(n_rows + 1);
     row_start.push_back(0);
     for (PetscInt i = first_row; i < last_row; ++i)
       {
-        row.clear();
-        for (unsigned int k = 0; k < n_matrices; ++k)
-          {
-            const Mat          A = static_cast<Mat>(*matrices[k]);
-            PetscInt           n = 0;
-            const PetscInt    *c = nullptr;
-            const PetscScalar *v = nullptr;
-            petsc_check(MatGetRow(A, i, &n, &c, &v));
-            for (PetscInt j = 0; j < n; ++j)
-              if (v[j] != 0.)
-                row.push_back({c[j], k, v[j]});
-            petsc_check(MatRestoreRow(A, i, &n, &c, &v));
-          }
-        std::stable_sort(row.begin(), row.end(),
-                         [](const Entry &a, const Entry &b) { return a.column < b.column; });
+        merge_row(i);
+        std::uint64_t n = 0;
+        for (std::size_t j = 0; j < row.size(); ++j)
+          n += new_column(j);
+        row_start.push_back(row_start.back() + n);
+      }
+    columns.resize(row_start.back());
+    values.assign(row_start.back() * n_matrices, 0.f);
+    std::vector<PetscInt> ghosts;
+    for (PetscInt i = first_row; i < last_row; ++i)
+      {
+        merge_row(i);
+        std::uint64_t e = row_start[i - first_row];
         for (std::size_t j = 0; j < row.size(); ++j)
           {
-            if (j == 0 || row[j].column != row[j - 1].column)
-              {
-                columns.push_back(static_cast<std::uint32_t>(row[j].column));
-                values.resize(values.size() + n_matrices, 0.f);
-                if (row[j].column < first_row || row[j].column >= last_row)
-                  ghosts.push_back(row[j].column);
-              }
-            values[values.size() - n_matrices + row[j].matrix] = static_cast<float>(row[j].value);
+            if (j > 0 && new_column(j))
+              ++e;
+            const PetscInt c = row[j].column;
+            columns[e]       = static_cast<std::uint32_t>(c);
+            if (new_column(j) && (c < first_row || c >= last_row))
+              ghosts.push_back(c);
+            values[e * n_matrices + row[j].matrix] = static_cast<float>(row[j].value);
           }
-        row_start.push_back(columns.size());
       }
     std::sort(ghosts.begin(), ghosts.end());
     ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
@@ -106,8 +118,6 @@ namespace archdam::time
       c = static_cast<PetscInt>(c) >= first_row && static_cast<PetscInt>(c) < last_row ?
             c - first_row :
             n_rows + (std::lower_bound(ghosts.begin(), ghosts.end(), c) - ghosts.begin());
-    columns.shrink_to_fit();
-    values.shrink_to_fit();
     interleaved.resize((n_rows + ghosts.size()) * n_matrices);
 
     n_ghosts = static_cast<PetscInt>(ghosts.size());
