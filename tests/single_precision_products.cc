@@ -8,7 +8,9 @@
 // 2^-24 sum_k sum_j |A_k(i, j) x_k(j)| (the sums are formed in double), and
 // the largest error must be a sizeable part of that bound (the entries are
 // indeed rounded). The product of one matrix alone from the same storage
-// (SinglePrecisionProducts::vmult) the same way. The entries kept are counted against the union of the
+// (SinglePrecisionProducts::vmult) the same way, and its product with another
+// vector formed in the sum's pass, which must leave the sum bit for bit as it
+// was. The entries kept are counted against the union of the
 // nonzero entries, counted here. Under MPI the rows, and so the columns
 // other ranks own, are spread over the ranks.
 
@@ -161,18 +163,30 @@ namespace
     sum.subtract_from(vectors, y);
     const double worst = worst_of(y, reference, bound);
 
-    // the last matrix's product alone, from the same storage
+    // the last matrix's product alone, from the same storage, and its
+    // product with another vector in the same pass as the sum, which must
+    // leave the sum bit for bit as it was
     const unsigned int    last = count - 1;
     archdam::SparseMatrix abs_last;
     make_matrix(kind(last), owned, abs_last, nonzero, true);
-    archdam::Vector abs_x(x[last]), last_bound(owned, MPI_COMM_WORLD);
-    for (const auto i : owned)
-      abs_x(i) = std::abs(x[last](i));
-    abs_x.compress(VectorOperation::insert);
-    abs_last.vmult(last_bound, abs_x);
-    A[last].vmult(reference, x[last]);
+    // the last matrix's product with @p v against PETSc's, as a part of its bound
+    const auto worst_of_last = [&](const archdam::Vector &v, const archdam::Vector &value) {
+      archdam::Vector abs_v(v), last_bound(owned, MPI_COMM_WORLD);
+      for (const auto i : owned)
+        abs_v(i) = std::abs(v(i));
+      abs_v.compress(VectorOperation::insert);
+      abs_last.vmult(last_bound, abs_v);
+      A[last].vmult(reference, v);
+      return worst_of(value, reference, last_bound);
+    };
     sum.vmult(last, x[last], product);
-    const double worst_alone = worst_of(product, reference, last_bound);
+    const double    worst_alone = worst_of_last(x[last], product);
+    archdam::Vector w(owned, MPI_COMM_WORLD), y_again(owned, MPI_COMM_WORLD);
+    random_vector(29, w);
+    random_vector(5, y_again);
+    sum.subtract_from(vectors, y_again, last, w, product);
+    const double worst_second = worst_of_last(w, product);
+    y_again -= y;
     const auto kept  = Utilities::MPI::sum(sum.entries(), MPI_COMM_WORLD);
     const auto union_nonzero =
       Utilities::MPI::sum(static_cast<std::uint64_t>(nonzero.size()), MPI_COMM_WORLD);
@@ -186,6 +200,10 @@ namespace
         << testing::yes(worst >= 0.05) << std::endl;
     out << what << ": the last one's product alone within its bound: "
         << testing::yes(worst_alone <= 1. + 1e-6 && worst_alone >= 0.05) << std::endl;
+    out << what << ": the sum with the last one's product with another vector in the same "
+        << "pass: the sum bit for bit the same: " << testing::yes(y_again.linfty_norm() == 0.)
+        << "; the product within its bound: "
+        << testing::yes(worst_second <= 1. + 1e-6 && worst_second >= 0.05) << std::endl;
     out << what << ": entries kept = the nonzero entries of the patterns' union ("
         << union_nonzero << "): " << testing::yes(kept == union_nonzero) << std::endl;
   }

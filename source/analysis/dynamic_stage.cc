@@ -50,7 +50,11 @@ namespace archdam::analysis
     operators.stiffness = coupled ? &coupled->stiffness : &model().stiffness();
     operators.damping   = coupled ? &coupled->damping : model().damping();
     if (operators.damping && integrator)
-      operators.damping_products = integrator->single_precision_products();
+      {
+        operators.damping_products = integrator->single_precision_products();
+        if (operators.damping_products)
+          operators.integrator = integrator.get();
+      }
     operators.rayleigh  = p.damping.rayleigh_coefficients();
     operators.newmark   = p.time_integration;
     operators.fluid     = model().fluid();

@@ -149,7 +149,7 @@ namespace archdam::analysis
                       &boundary_static, &free_field_prev, &free_field_static, &radiation_prev,
                       &dashpot_prev, &ub_prev, &tmp, &tmp2, &du, &work, &scratch,
                       &a_prev, &inertia_prev, &mean, &jump, &solid_part,
-                      &correction_residual, &dam_prev})
+                      &correction_residual, &dam_prev, &du_last})
       m.space->reinit(*v);
     if (has_water)
       {
@@ -194,7 +194,8 @@ namespace archdam::analysis
   }
 
   void
-  EnergyBalance::full_product(const Operator which, const Vector &x, Vector &out) const
+  EnergyBalance::full_product(const Operator which, const Vector &x, Vector &out,
+                              const Vector *condensed) const
   {
     // A x for the full (unconstrained) solid operator, x from free_part():
     // the condensed A on the free entries, and with a prescribed boundary b
@@ -212,7 +213,12 @@ namespace archdam::analysis
         solid_part.scale(solid_mask);
         solid = &solid_part;
       }
-    if (which == Operator::damping && m.damping_products != nullptr)
+    // (A condensed product formed elsewhere on all of x agrees on the solid
+    // free rows: the condensed operators have no entries in the constrained
+    // columns, the solid's rows none in the water's columns.)
+    if (condensed != nullptr)
+      out = *condensed;
+    else if (which == Operator::damping && m.damping_products != nullptr)
       m.damping_products->vmult(1, *solid, out);
     else
       (which == Operator::mass ? *m.mass : which == Operator::stiffness ? *m.stiffness : *m.damping)
@@ -231,13 +237,13 @@ namespace archdam::analysis
   }
 
   void
-  EnergyBalance::damping_force(const Vector &v, Vector &out) const
+  EnergyBalance::damping_force(const Vector &v, Vector &out, const Vector *condensed) const
   {
     // D = alpha M + beta K (doc/theory/solid.md §4); for the coupled system this is
     // the solid's block of D_c, the water's radiation being counted apart.
     if (m.damping)
       {
-        full_product(Operator::damping, v, out);
+        full_product(Operator::damping, v, out, condensed);
         return;
       }
     full_product(Operator::mass, v, out);
@@ -247,6 +253,12 @@ namespace archdam::analysis
         full_product(Operator::stiffness, v, tmp2);
         out.add(m.rayleigh.second, tmp2);
       }
+  }
+
+  double
+  EnergyBalance::last_step_damping(const Vector &force) const
+  {
+    return 0.5 * (du_last * damping_prev + du_last * force);
   }
 
   void
@@ -294,6 +306,7 @@ namespace archdam::analysis
         full_product(Operator::mass, a_prev, inertia_prev);
       }
     correction_residual = 0.;
+    damping_pending     = false;
     p_prev  = 0.;
     impulse = 0.;
     if (has_water)
@@ -339,6 +352,19 @@ namespace archdam::analysis
   {
     const double dt = s.time - t_prev;
     const double b1 = m.newmark.beta1, b2 = m.newmark.beta2;
+    // Rayleigh damping, du . (D v_n + D v_{n+1}) / 2, is added one step
+    // late: the step just made formed D v_n, the last step's D v_{n+1}, in
+    // its pass over the integrator's copy of D (Model::integrator), else a
+    // product forms it here (v_prev is still the last step's state).
+    if (damping_pending)
+      {
+        damping_force(v_prev, tmp,
+                      m.integrator && m.damping_products ?
+                        m.integrator->damping_force_at_start() :
+                        nullptr);
+        sums.damping += last_step_damping(tmp);
+        damping_prev = tmp;
+      }
     free_part(s.u, tmp);
     du = tmp;
     du -= u_prev;
@@ -377,11 +403,9 @@ namespace archdam::analysis
     else
       free_part(s.v, v_prev);
 
-    // Rayleigh damping: du . (D v_n + D v_{n+1}) / 2.
-    damping_force(v_prev, tmp);
-    const double damping_work = 0.5 * (du * damping_prev + du * tmp);
-    damping_prev              = tmp;
-    add_dam_damping(s, damping_work);
+    du_last         = du; // its damping work with the next step (above)
+    damping_pending = true;
+    add_dam_damping(s);
 
     // Relative formulation: F = -sum_d a_g,d M iota_d (doc/theory/foundation.md §2), and
     // the ground's own motion, integrated by the same Newmark rule, for the
@@ -477,7 +501,7 @@ namespace archdam::analysis
   }
 
   void
-  EnergyBalance::add_dam_damping(const time::NewmarkState &s, const double total)
+  EnergyBalance::add_dam_damping(const time::NewmarkState &s)
   {
     // With the dam's mass term on v - w, w = iota v_r (doc/theory/solid.md
     // §4), the damping forces are -D v + D_dam w, D_dam w = sum_d v_r,d g_d
@@ -491,11 +515,9 @@ namespace archdam::analysis
     //     + du_r . D_dam <r>,                (handed to the reference motion)
     // with du_r . D_dam <r> = sum_d dd_r,d (<g_d . v> - m_d <v_r,d>), m_d =
     // iota_d . g_d = alpha_d times the dam's mass.
+    // (EnergyTerms::damping itself, du . D <v>, is added in add_step().)
     if (!m.dam_damping)
-      {
-        sums.damping += total;
-        return;
-      }
+      return;
     m.dam_damping->vmult(tmp2, v_prev);
     const double dam_total = 0.5 * (du * dam_prev + du * tmp2);
     dam_prev               = tmp2;
@@ -517,7 +539,7 @@ namespace archdam::analysis
         vr_prev = vr;
         dr_prev = dr;
       }
-    sums.damping += total - relative_load - handed;
+    sums.damping -= relative_load + handed;
     sums.damping_dam += dam_total - relative_load - handed;
     sums.damping_reference += handed;
   }
@@ -552,6 +574,11 @@ namespace archdam::analysis
   {
     EnergyTerms e = sums;
     Vector      w(u_prev), Ax(u_prev);
+    if (damping_pending) // the last step's damping work (add_step())
+      {
+        damping_force(v_prev, Ax);
+        e.damping += last_step_damping(Ax);
+      }
     full_product(Operator::mass, v_prev, Ax);
     e.kinetic = 0.5 * (Ax * v_prev);
     w -= u_static;
@@ -666,10 +693,10 @@ namespace archdam::analysis
     for (const Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                             &boundary_prev, &boundary_static, &free_field_prev,
                             &free_field_static, &radiation_prev, &dashpot_prev, &ub_prev, &a_prev,
-                            &inertia_prev, &correction_residual, &dam_prev})
+                            &inertia_prev, &correction_residual, &dam_prev, &du_last})
       binary::write(out, *v);
     binary::write_all(out, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums,
-                      reference_work_prev, vr_prev, dr_prev);
+                      reference_work_prev, vr_prev, dr_prev, damping_pending);
   }
 
   void
@@ -678,9 +705,9 @@ namespace archdam::analysis
     for (Vector *v : {&u_static, &u_prev, &v_prev, &damping_prev, &p_prev, &impulse,
                       &boundary_prev, &boundary_static, &free_field_prev, &free_field_static,
                       &radiation_prev, &dashpot_prev, &ub_prev, &a_prev, &inertia_prev,
-                      &correction_residual, &dam_prev})
+                      &correction_residual, &dam_prev, &du_last})
       binary::read(in, *v);
     binary::read_all(in, ag_prev, vg, f_static, w_static, f_prev, w_prev, t_prev, sums,
-                     reference_work_prev, vr_prev, dr_prev);
+                     reference_work_prev, vr_prev, dr_prev, damping_pending);
   }
 } // namespace archdam::analysis

@@ -24,8 +24,10 @@ namespace archdam::output
     constexpr char          magic[8] = {'A', 'R', 'C', 'H', 'C', 'K', 'P', 'T'};
     // 5: the joints' recorder keeps each pair's peak slip (a checkpoint of
     // version 4 would be read out of step); 6: the stress envelope's points
-    // keep their arch capacity and whether the evaluation counts them
-    constexpr std::uint32_t format_version = 6;
+    // keep their arch capacity and whether the evaluation counts them; 7:
+    // the energy balance keeps the last step's increment, whose damping work
+    // it adds one step late
+    constexpr std::uint32_t format_version = 7;
 
     struct Header
     {

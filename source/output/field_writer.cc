@@ -156,6 +156,11 @@ namespace archdam::output
         const Stress stress(materials, temperature, Stress::Layout::tensor);
         DataOut<dim> data_out;
         patches(data_out, stress);
+        // zlib's fastest level: a few times faster than its best, for files a
+        // little larger (doc/performance.md §9)
+        DataOutBase::VtkFlags flags;
+        flags.compression_level = DataOutBase::VtkFlags::best_speed;
+        data_out.set_flags(flags);
         const std::string pvtu =
           write_vtu_record(data_out, p.directory, "solution", index, space.comm);
         pvd_records.emplace_back(s.time, pvtu);

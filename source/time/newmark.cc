@@ -205,20 +205,22 @@ namespace archdam::time
     tmp = s.a;
     tmp.add(alpha, vp);
     hold_in_single_precision(nullptr);
-    if (load_products)
-      load_products->subtract_from(D != nullptr ? std::vector<const Vector *>{&tmp, &vp} :
-                                                  std::vector<const Vector *>{&tmp},
-                                   rhs);
-    else
+    if (load_products && D != nullptr)
       {
-        M.vmult(da, tmp);
-        rhs -= da;
-        if (D != nullptr)
-          {
-            D->vmult(da, vp);
-            rhs -= da;
-          }
+        // D v_n in the same pass, for the energy balance
+        if (damping_at_start.size() == 0)
+          damping_at_start.reinit(vp);
+        load_products->subtract_from({&tmp, &vp}, rhs, 1, s.v, damping_at_start);
       }
+    else
+      subtract_products(
+        load_products.get(),
+        [&] {
+          return D != nullptr ? std::vector<const SparseMatrix *>{&M, D} :
+                                std::vector<const SparseMatrix *>{&M};
+        },
+        D != nullptr ? std::vector<const Vector *>{&tmp, &vp} : std::vector<const Vector *>{&tmp},
+        rhs);
     tmp = up;
     tmp.add(beta, vp);
     K.vmult(da, tmp);
@@ -253,6 +255,26 @@ namespace archdam::time
     tmp = x;
     constraints.distribute(tmp);
     s.u.add(p.beta2 * dt * dt, tmp);
+  }
+
+  void
+  NewmarkIntegrator::subtract_products(
+    const SinglePrecisionProducts                          *copy,
+    const std::function<std::vector<const SparseMatrix *>()> &matrices,
+    const std::vector<const Vector *>                       &x,
+    Vector                                                  &y)
+  {
+    if (copy)
+      {
+        copy->subtract_from(x, y);
+        return;
+      }
+    const auto A = matrices();
+    for (unsigned int k = 0; k < A.size(); ++k)
+      {
+        A[k]->vmult(da, *x[k]);
+        y -= da;
+      }
   }
 
   std::vector<const SparseMatrix *>
@@ -304,20 +326,10 @@ namespace archdam::time
     if (D != nullptr)
       column_vectors.push_back(&prescribed_v);
     reduced_load = load_next;
-    if (p.product_precision == Precision::single_precision)
-      {
-        hold_in_single_precision(&prescribed);
-        column_products->subtract_from(column_vectors, reduced_load);
-      }
-    else
-      {
-        const auto columns = columns_of_matrices(prescribed);
-        for (unsigned int k = 0; k < columns.size(); ++k)
-          {
-            columns[k]->vmult(tmp, *column_vectors[k]);
-            reduced_load -= tmp;
-          }
-      }
+    hold_in_single_precision(&prescribed);
+    subtract_products(
+      column_products.get(), [&] { return columns_of_matrices(prescribed); }, column_vectors,
+      reduced_load);
     advance(reduced_load, s, solve);
 
     // advance() left the constrained DOFs at their predictors: set them.

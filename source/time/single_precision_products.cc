@@ -12,24 +12,42 @@ namespace archdam::time
 
   namespace
   {
-    /// y_i -= sum over the row's entries of sum_k v_k x_k, K matrices.
-    template <unsigned int K>
+    /// With First, y_i -= sum over the row's entries of sum_k v_k x_k, K
+    /// matrices (the vectors' entries K + 1 apart); with Second, z_i = the
+    /// row's sum of v_m w (w in the last slot).
+    template <unsigned int K, bool First, bool Second>
     void
     subtract_rows(const PetscInt n_rows, const std::uint64_t *row_start,
-                  const std::uint32_t *columns, const float *values, const double *x, double *y)
+                  const std::uint32_t *columns, const float *values, const double *x, double *y,
+                  const unsigned int m, double *z)
     {
       for (PetscInt i = 0; i < n_rows; ++i)
         {
-          double sum = 0.;
+          double sum = 0., second = 0.;
           for (std::uint64_t e = row_start[i]; e < row_start[i + 1]; ++e)
             {
-              const double *xc = x + static_cast<std::size_t>(columns[e]) * K;
+              const double *xc = x + static_cast<std::size_t>(columns[e]) * (K + 1);
               const float  *v  = values + e * K;
-              for (unsigned int k = 0; k < K; ++k)
-                sum += static_cast<double>(v[k]) * xc[k];
+              if constexpr (First)
+                for (unsigned int k = 0; k < K; ++k)
+                  sum += static_cast<double>(v[k]) * xc[k];
+              if constexpr (Second)
+                second += static_cast<double>(v[m]) * xc[K];
             }
-          y[i] -= sum;
+          if constexpr (First)
+            y[i] -= sum;
+          if constexpr (Second)
+            z[i] = second;
         }
+    }
+
+    /// The kernel for K matrices, the sum (First) and the second product.
+    template <unsigned int K>
+    auto
+    kernel_for(const bool first, const bool second)
+    {
+      return first ? (second ? subtract_rows<K, true, true> : subtract_rows<K, true, false>) :
+                     subtract_rows<K, false, true>;
     }
   } // namespace
 
@@ -118,7 +136,7 @@ namespace archdam::time
       c = static_cast<PetscInt>(c) >= first_row && static_cast<PetscInt>(c) < last_row ?
             c - first_row :
             n_rows + (std::lower_bound(ghosts.begin(), ghosts.end(), c) - ghosts.begin());
-    interleaved.resize((n_rows + ghosts.size()) * n_matrices);
+    interleaved.resize((n_rows + ghosts.size()) * (n_matrices + 1));
 
     n_ghosts = static_cast<PetscInt>(ghosts.size());
     Vec model_vector;
@@ -154,32 +172,35 @@ namespace archdam::time
     const PetscScalar *owned;
     petsc_check(VecGetArrayRead(xk, &owned));
     for (PetscInt i = 0; i < n_rows; ++i)
-      interleaved[i * n_matrices + k] = owned[i];
+      interleaved[i * (n_matrices + 1) + k] = owned[i];
     petsc_check(VecRestoreArrayRead(xk, &owned));
     petsc_check(VecScatterBegin(ghost_scatter, xk, ghost_values, INSERT_VALUES, SCATTER_FORWARD));
     petsc_check(VecScatterEnd(ghost_scatter, xk, ghost_values, INSERT_VALUES, SCATTER_FORWARD));
     const PetscScalar *ghost;
     petsc_check(VecGetArrayRead(ghost_values, &ghost));
     for (PetscInt g = 0; g < n_ghosts; ++g)
-      interleaved[(n_rows + g) * n_matrices + k] = ghost[g];
+      interleaved[(n_rows + g) * (n_matrices + 1) + k] = ghost[g];
     petsc_check(VecRestoreArrayRead(ghost_values, &ghost));
   }
 
   void
-  SinglePrecisionProducts::subtract_gathered(Vector &y) const
+  SinglePrecisionProducts::subtract_gathered(Vector *y, const unsigned int k, Vector *z) const
   {
-    PetscScalar *out;
-    petsc_check(VecGetArray(static_cast<const Vec &>(y), &out));
-    const auto run = [&](auto kernel) {
-      kernel(n_rows, row_start.data(), columns.data(), values.data(), interleaved.data(), out);
-    };
-    if (n_matrices == 1)
-      run(subtract_rows<1>);
-    else if (n_matrices == 2)
-      run(subtract_rows<2>);
-    else
-      run(subtract_rows<3>);
-    petsc_check(VecRestoreArray(static_cast<const Vec &>(y), &out));
+    PetscScalar *out = nullptr, *second = nullptr;
+    if (y != nullptr)
+      petsc_check(VecGetArray(static_cast<const Vec &>(*y), &out));
+    if (z != nullptr)
+      petsc_check(VecGetArray(static_cast<const Vec &>(*z), &second));
+    const bool first = y != nullptr, second_product = z != nullptr;
+    const auto kernel = n_matrices == 1 ? kernel_for<1>(first, second_product) :
+                        n_matrices == 2 ? kernel_for<2>(first, second_product) :
+                                          kernel_for<3>(first, second_product);
+    kernel(n_rows, row_start.data(), columns.data(), values.data(), interleaved.data(), out, k,
+           second);
+    if (z != nullptr)
+      petsc_check(VecRestoreArray(static_cast<const Vec &>(*z), &second));
+    if (y != nullptr)
+      petsc_check(VecRestoreArray(static_cast<const Vec &>(*y), &out));
   }
 
   void
@@ -188,17 +209,26 @@ namespace archdam::time
     AssertDimension(x.size(), n_matrices);
     for (unsigned int k = 0; k < n_matrices; ++k)
       gather(k, *x[k]);
-    subtract_gathered(y);
+    subtract_gathered(&y);
+  }
+
+  void
+  SinglePrecisionProducts::subtract_from(const std::vector<const Vector *> &x, Vector &y,
+                                         const unsigned int k, const Vector &w, Vector &z) const
+  {
+    AssertDimension(x.size(), n_matrices);
+    AssertIndexRange(k, n_matrices);
+    for (unsigned int j = 0; j < n_matrices; ++j)
+      gather(j, *x[j]);
+    gather(n_matrices, w);
+    subtract_gathered(&y, k, &z);
   }
 
   void
   SinglePrecisionProducts::vmult(const unsigned int k, const Vector &x, Vector &y) const
   {
     AssertIndexRange(k, n_matrices);
-    std::fill(interleaved.begin(), interleaved.end(), 0.);
-    gather(k, x);
-    y = 0.;
-    subtract_gathered(y);
-    y *= -1.;
+    gather(n_matrices, x);
+    subtract_gathered(nullptr, k, &y);
   }
 } // namespace archdam::time

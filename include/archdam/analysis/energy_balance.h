@@ -109,8 +109,10 @@ namespace archdam::analysis
    * model, the boundary nodes included (full operators from the prescribed
    * columns), and the input is the work of the reactions there: input minus
    * radiated, which the MTF does not separate.
-   * Cost per step: D v (damping, one product with the coupled system's D,
-   * else M v and K v), H p (water), and vector operations; with a
+   * Cost per step: D v (damping: formed in the integrator's own pass with
+   * the products in single precision, Model::integrator, else one product
+   * with the coupled system's D, else M v and K v), H p (water), and
+   * vector operations; with a
    * prescribed boundary, products with the rows of the prescribed columns
    * at the prescribed DOFs only (BoundaryRows): the reactions, the
    * boundary's part of D v, and the water's rows at those columns.
@@ -138,6 +140,11 @@ namespace archdam::analysis
       /// `damping` itself is then not multiplied (the dynamic stage releases
       /// its entries).
       const time::SinglePrecisionProducts       *damping_products = nullptr;
+      /// With `damping_products`: the integrator whose step forms D v_n in
+      /// its own pass (NewmarkIntegrator::damping_force_at_start()); the
+      /// balance takes D v_{n+1} from the next step's pass and adds a
+      /// step's damping work one step late (its last step's in terms()).
+      const time::NewmarkIntegrator             *integrator = nullptr;
       std::pair<double, double>                  rayleigh{0., 0.};
       time::NewmarkParameters                    newmark;
       /// M iota_d of the relative formulation (massless or rigid foundation).
@@ -221,17 +228,23 @@ namespace archdam::analysis
     };
     /// The full solid operator @p which (condensed, plus its prescribed
     /// columns, if any) times the solid part of x from free_part();
-    /// solid rows only.
+    /// solid rows only. @p condensed: the condensed operator's product
+    /// with x, if formed already (its solid free rows are used).
     void
-    full_product(Operator which, const Vector &x, Vector &out) const;
-    /// D v = alpha M v + beta K v (full operators; Model::damping if given).
+    full_product(Operator which, const Vector &x, Vector &out,
+                 const Vector *condensed = nullptr) const;
+    /// D v = alpha M v + beta K v (full operators; Model::damping if given,
+    /// with @p condensed as in full_product()).
     void
-    damping_force(const Vector &v, Vector &out) const;
+    damping_force(const Vector &v, Vector &out, const Vector *condensed = nullptr) const;
+    /// The damping's work over the last step, du_last . (D v_n + D v_{n+1}) / 2,
+    /// with D v_n in damping_prev and @p force = D v_{n+1}.
+    double
+    last_step_damping(const Vector &force) const;
     /// Itemize the step's damping (EnergyTerms::damping_dam,
-    /// damping_reference) for the new state @p s, the total damping's work
-    /// @p total over it and the increment du.
+    /// damping_reference) for the new state @p s and the increment du.
     void
-    add_dam_damping(const time::NewmarkState &s, double total);
+    add_dam_damping(const time::NewmarkState &s);
     /// The reaction on the prescribed DOFs at the state @p s.
     void
     boundary_reaction(const time::NewmarkState &s, Vector &out);
@@ -269,6 +282,10 @@ namespace archdam::analysis
     /// none): the out-of-balance force it leaves at the step's end, whose
     /// work over the next step is the correction's too.
     Vector correction_residual;
+    /// The last step's increment, whose damping work is added with the next
+    /// step (Model::integrator), and whether there is one.
+    Vector du_last;
+    bool   damping_pending = false;
     dealii::Tensor<1, dim> ag_prev, vg;
     /// D_dam v, (D_dam iota_d) . v, v_r and d_r after the last step, and
     /// iota_d . D_dam iota_d (alpha_d times the dam's mass).

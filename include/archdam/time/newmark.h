@@ -185,6 +185,16 @@ namespace archdam::time
     {
       return load_products.get();
     }
+    /// D v_n of the state the last advance() started from, formed in the
+    /// same pass over the copies' entries as the effective load (Product
+    /// precision = single with a general damping matrix; null otherwise or
+    /// before the first step): the energy balance's D v, one step late
+    /// (doc/performance.md §11).
+    const Vector *
+    damping_force_at_start() const
+    {
+      return damping_at_start.size() > 0 ? &damping_at_start : nullptr;
+    }
     /// What the products in single precision hold on this rank [bytes].
     std::size_t
     single_precision_memory() const
@@ -270,6 +280,8 @@ namespace archdam::time
     /// the columns of the prescribed DOFs (hold_in_single_precision()).
     std::unique_ptr<SinglePrecisionProducts> load_products, column_products;
     const PrescribedDofs                    *columns_of = nullptr;
+    /// D v_n of the last step's start (damping_force_at_start()).
+    Vector damping_at_start;
 
     /// What both public constructors set (@p damping null: Rayleigh damping
     /// from @p rayleigh); each then builds its own effective operator.
@@ -284,6 +296,12 @@ namespace archdam::time
     /// The columns of M, K (and D) at the prescribed DOFs, in that order.
     std::vector<const SparseMatrix *>
     columns_of_matrices(const PrescribedDofs &prescribed) const;
+    /// y -= sum_k A_k x_k: from @p copy in single precision if there is
+    /// one, else PETSc's products with @p matrices() one at a time.
+    void
+    subtract_products(const SinglePrecisionProducts                          *copy,
+                      const std::function<std::vector<const SparseMatrix *>()> &matrices,
+                      const std::vector<const Vector *> &x, Vector &y);
     /// Add beta1 dt diag(dashpots) to Kbar (the viscous boundary).
     void
     add_dashpots_to_effective_matrix();

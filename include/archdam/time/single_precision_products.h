@@ -42,6 +42,12 @@ namespace archdam::time
     void
     subtract_from(const std::vector<const Vector *> &x, Vector &y) const;
 
+    /// subtract_from(), and in the same pass z = A_k w: a product with one
+    /// of the matrices for the price of w's entries, the entries read once.
+    void
+    subtract_from(const std::vector<const Vector *> &x, Vector &y, unsigned int k,
+                  const Vector &w, Vector &z) const;
+
     /// y = A_k x alone (the pass reads every matrix's entries all the same:
     /// it costs a whole subtract_from()).
     void
@@ -72,14 +78,16 @@ namespace archdam::time
     /// The other ranks' entries the rows need, and the scatter that brings them.
     VecScatter ghost_scatter = nullptr;
     Vec        ghost_values  = nullptr;
-    /// The vectors' entries, owned then ghosts, n_matrices per entry.
+    /// The vectors' entries, owned then ghosts, n_matrices + 1 per entry
+    /// (the last for the second product's vector).
     mutable std::vector<double> interleaved;
 
     /// x's owned and ghost entries into slot k of `interleaved`.
     void
     gather(unsigned int k, const Vector &x) const;
-    /// y -= the sum with the vectors gathered.
+    /// y -= the sum with the vectors gathered (unless @p y is null), and
+    /// with @p z, z = A_k w (w in the last slot).
     void
-    subtract_gathered(Vector &y) const;
+    subtract_gathered(Vector *y, unsigned int k = 0, Vector *z = nullptr) const;
   };
 } // namespace archdam::time
