@@ -359,9 +359,7 @@ namespace archdam::analysis
     if (damping_pending)
       {
         damping_force(v_prev, tmp,
-                      m.integrator && m.damping_products ?
-                        m.integrator->damping_force_at_start() :
-                        nullptr);
+                      m.integrator ? m.integrator->damping_force_at_start() : nullptr);
         sums.damping += last_step_damping(tmp);
         damping_prev = tmp;
       }
