@@ -7,6 +7,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -194,6 +195,23 @@ namespace archdam::physics::foundation
             z_point.push_back(x[dim - 1]);
           }
       }
+    // The free field depends on the elevation alone, and the boundary's
+    // nodes and points lie on few elevations: it is evaluated once per
+    // elevation and step.
+    const auto elevation_indices = [&](const std::vector<double> &z) {
+      std::vector<unsigned int> index(z.size());
+      for (unsigned int k = 0; k < z.size(); ++k)
+        index[k] = std::lower_bound(elevations.begin(), elevations.end(), z[k]) -
+                   elevations.begin();
+      return index;
+    };
+    elevations = z_boundary;
+    elevations.insert(elevations.end(), z_point.begin(), z_point.end());
+    std::sort(elevations.begin(), elevations.end());
+    elevations.erase(std::unique(elevations.begin(), elevations.end()), elevations.end());
+    elevation_of_boundary = elevation_indices(z_boundary);
+    elevation_of_point    = elevation_indices(z_point);
+    free_field_at.resize(elevations.size());
     IndexSet relevant = space.locally_owned;
     relevant.add_indices(needed);
     ghosted.reinit(space.locally_owned, relevant, comm);
@@ -201,39 +219,56 @@ namespace archdam::physics::foundation
     values.resize(boundary_dofs.size());
   }
 
+  void
+  MultiTransmittingBoundary::gather_stencils(const Vector &u)
+  {
+    // (one pass over u's local array: an access by entry would ask PETSc
+    // for the array each time)
+    ghosted = u;
+    stencil_value.resize(stencil_dof.size());
+    ghosted.extract_subvector_to(stencil_dof.begin(), stencil_dof.end(), stencil_value.begin());
+  }
+
   double
-  MultiTransmittingBoundary::interpolate(const unsigned int point, const Vector &u) const
+  MultiTransmittingBoundary::interpolate(const unsigned int point) const
   {
     double value = 0.;
     for (unsigned int s = stencil_offset[point]; s < stencil_offset[point + 1]; ++s)
-      value += stencil_weight[s] * u(stencil_dof[s]);
+      value += stencil_weight[s] * stencil_value[s];
     return value;
   }
 
   void
   MultiTransmittingBoundary::initialize(const Vector &u0)
   {
-    ghosted = u0;
+    gather_stencils(u0);
     u0_boundary.resize(boundary_dofs.size());
-    for (unsigned int k = 0; k < boundary_dofs.size(); ++k)
-      u0_boundary[k] = ghosted(boundary_dofs[k]);
+    ghosted.extract_subvector_to(boundary_dofs.begin(), boundary_dofs.end(), u0_boundary.begin());
     u0_point.resize(z_point.size());
     for (unsigned int q = 0; q < z_point.size(); ++q)
-      u0_point[q] = interpolate(q, ghosted);
+      u0_point[q] = interpolate(q);
     for (auto &h : history)
       std::fill(h.begin(), h.end(), 0.);
+  }
+
+  void
+  MultiTransmittingBoundary::evaluate_free_field(const double t)
+  {
+    for (unsigned int e = 0; e < elevations.size(); ++e)
+      free_field_at[e] = free_field.displacement(elevations[e], t);
   }
 
   const std::vector<double> &
   MultiTransmittingBoundary::next_values(const double t_next)
   {
+    evaluate_free_field(t_next);
     for (unsigned int k = 0; k < boundary_dofs.size(); ++k)
       {
         double scattered = 0.;
         for (unsigned int j = 1; j <= order; ++j)
           scattered += coefficient[j - 1] * history[j - 1][k * order + j - 1];
-        values[k] = u0_boundary[k] +
-                    free_field.displacement(z_boundary[k], t_next)[components[k]] + scattered;
+        values[k] = u0_boundary[k] + free_field_at[elevation_of_boundary[k]][components[k]] +
+                    scattered;
       }
     return values;
   }
@@ -243,11 +278,12 @@ namespace archdam::physics::foundation
   {
     if (order == 0)
       return;
-    ghosted = u;
+    gather_stencils(u);
     std::rotate(history.rbegin(), history.rbegin() + 1, history.rend()); // newest first
+    evaluate_free_field(t);
     for (unsigned int q = 0; q < z_point.size(); ++q)
-      history[0][q] = interpolate(q, ghosted) - u0_point[q] -
-                      free_field.displacement(z_point[q], t)[components[q / order]];
+      history[0][q] = interpolate(q) - u0_point[q] -
+                      free_field_at[elevation_of_point[q]][components[q / order]];
   }
 
   void

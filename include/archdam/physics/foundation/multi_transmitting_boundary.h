@@ -74,8 +74,15 @@ namespace archdam::physics::foundation
     load(std::istream &in);
 
   private:
+    /// stencil_value = u at stencil_dof (through ghosted).
+    void
+    gather_stencils(const Vector &u);
+    /// u at point @p point, from stencil_value.
     double
-    interpolate(unsigned int point, const Vector &u) const;
+    interpolate(unsigned int point) const;
+    /// free_field_at = the free-field displacement at every elevation, time @p t.
+    void
+    evaluate_free_field(double t);
 
     const unsigned int                       order;
     const double                             dt;
@@ -91,13 +98,18 @@ namespace archdam::physics::foundation
     std::vector<double>                          z_point;
     std::vector<unsigned int>                    stencil_offset;
     std::vector<dealii::types::global_dof_index> stencil_dof;
-    std::vector<double>                          stencil_weight;
+    std::vector<double>                          stencil_weight, stencil_value;
     /// u_0 at the boundary DOFs and at the points.
     std::vector<double> u0_boundary, u0_point;
     /// history[m][p]: u_s at point p, m steps before the last recorded time.
     std::vector<std::vector<double>> history;
     std::vector<double>              values;
-    Vector                           ghosted;
+    /// The distinct elevations of the boundary's DOFs and points (sorted),
+    /// each one's index there, and the free field at them.
+    std::vector<double>                 elevations;
+    std::vector<unsigned int>           elevation_of_boundary, elevation_of_point;
+    std::vector<dealii::Tensor<1, dim>> free_field_at;
+    Vector                              ghosted;
     double                           max_courant = 0.;
   };
 } // namespace archdam::physics::foundation
