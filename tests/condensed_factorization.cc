@@ -10,9 +10,11 @@
 // unknowns negated, the shape of the coupled solid-water
 // matrix), the interface spread over the unknowns and, under MPI, the ranks.
 // And the BLAS products with one column that MUMPS's solves are made of
-// (time/single_column_products.h): dgemm with n = 1 (every transposition,
-// leading dimensions larger than the blocks) against the product summed
-// here, forwarded to dgemv, and the condensed solves going through it.
+// (time/single_column_products.h): dgemm and sgemm with one to five
+// columns (every transposition, leading dimensions larger than the blocks,
+// trailing zero columns) against the product summed here, forwarded to
+// gemv or to the library's product, and the condensed solves going through
+// it.
 // The other orders (SCOTCH's nested dissection, MUMPS's PORD) give the same
 // solves; the block low-rank factors are compressed and give the full-rank
 // factors' solves to about their tolerance; the factors in single precision
@@ -28,7 +30,9 @@
 
 #include "archdam_tests.h"
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 
 using namespace archdam;
@@ -38,54 +42,95 @@ extern "C" void
 dgemm_(const char *, const char *, const int *, const int *, const int *, const double *,
        const double *, const int *, const double *, const int *, const double *, double *,
        const int *);
+extern "C" void
+sgemm_(const char *, const char *, const int *, const int *, const int *, const float *,
+       const float *, const int *, const float *, const int *, const float *, float *,
+       const int *);
 
 namespace
 {
-  /// C = alpha op(A) op(B) + beta C through dgemm_ against the sums of the
-  /// definition, for one column (forwarded) and for three (the BLAS's own).
   void
-  check_single_column_products()
+  gemm(const char *ta, const char *tb, const int *m, const int *n, const int *k,
+       const double *alpha, const double *a, const int *lda, const double *b, const int *ldb,
+       const double *beta, double *c, const int *ldc)
+  {
+    dgemm_(ta, tb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+  }
+
+  void
+  gemm(const char *ta, const char *tb, const int *m, const int *n, const int *k,
+       const float *alpha, const float *a, const int *lda, const float *b, const int *ldb,
+       const float *beta, float *c, const int *ldc)
+  {
+    sgemm_(ta, tb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+  }
+
+  /// C = alpha op(A) op(B) + beta C through dgemm_ (sgemm_ for float)
+  /// against the sums of the definition, in double, for one to five
+  /// columns: one goes to gemv, two to four to the library's own product
+  /// (time/single_column_products.h), five to the BLAS's gemm; each also
+  /// with op(B)'s trailing columns zero (the product then has the leading
+  /// ones alone, C's others are scaled by beta). With beta = 0, C's entries
+  /// are not read (NaN there stays out of the result, as BLAS defines it).
+  template <typename Real>
+  void
+  check_narrow_products(const std::string &name, const double tolerance)
   {
     std::mt19937                           random(3);
     std::uniform_real_distribution<double> uniform(-1., 1.);
-    const int                              m = 37, k = 23, lda = 41, ldb = 29, ldc = 40;
-    std::uint64_t                          calls_of_one_column = 0;
+    const int                              m = 37, k = 150, lda = 151, ldb = 153, ldc = 40;
+    std::uint64_t                          forwarded = 0;
     const std::uint64_t before = time::single_column_products_forwarded();
     double                                 worst = 0.;
-    for (const int n : {1, 3})
+    for (const int n : {1, 2, 3, 4, 5})
       for (const char ta : {'N', 'T'})
         for (const char tb : {'N', 'T'})
-          {
-            std::vector<double> A(lda * std::max(m, k)), B(ldb * std::max(k, n)), C(ldc * n);
-            for (auto *v : {&A, &B, &C})
-              for (auto &x : *v)
-                x = uniform(random);
-            std::vector<double> reference(C);
-            const double        alpha = 0.7, beta = -1.3;
-            const auto a = [&](int i, int l) { return ta == 'N' ? A[i + l * lda] : A[l + i * lda]; };
-            const auto b = [&](int l, int j) { return tb == 'N' ? B[l + j * ldb] : B[j + l * ldb]; };
-            for (int j = 0; j < n; ++j)
-              for (int i = 0; i < m; ++i)
-                {
-                  double sum = 0.;
-                  for (int l = 0; l < k; ++l)
-                    sum += a(i, l) * b(l, j);
-                  reference[i + j * ldc] = alpha * sum + beta * reference[i + j * ldc];
-                }
-            dgemm_(&ta, &tb, &m, &n, &k, &alpha, A.data(), &lda, B.data(), &ldb, &beta,
-                   C.data(), &ldc);
-            for (int j = 0; j < n; ++j)
-              for (int i = 0; i < m; ++i)
-                worst = std::max(worst, std::abs(C[i + j * ldc] - reference[i + j * ldc]));
-            calls_of_one_column += n == 1;
-          }
-    testing::check_below("dgemm with one and with three columns, every transposition, "
-                         "against the sums, largest difference",
-                         worst, 1e-13);
-    testing::log() << "the " << calls_of_one_column << " products with one column went to dgemv, "
-                   << "those with three did not: "
-                   << testing::yes(time::single_column_products_forwarded() - before ==
-                                   calls_of_one_column)
+          for (const Real beta : {Real(-1.3), Real(0)})
+            for (const bool trailing_zero : {false, true})
+            {
+              std::vector<Real> A(lda * std::max(m, k)), B(ldb * std::max(k, n)), C(ldc * n);
+              for (auto *v : {&A, &B, &C})
+                for (auto &x : *v)
+                  x = uniform(random);
+              if (beta == Real(0))
+                std::fill(C.begin(), C.end(), std::numeric_limits<Real>::quiet_NaN());
+              std::vector<double> reference(C.size());
+              const Real          alpha = 0.7;
+              const auto a = [&](int i, int l) { return ta == 'N' ? A[i + l * lda] : A[l + i * lda]; };
+              // with trailing_zero, op(B)'s columns after the first (after the
+              // second with four or five) are zero
+              if (trailing_zero)
+                for (int l = 0; l < k; ++l)
+                  for (int j = n < 4 ? 1 : 2; j < n; ++j)
+                    (tb == 'N' ? B[l + j * ldb] : B[j + l * ldb]) = 0;
+              const auto b = [&](int l, int j) { return tb == 'N' ? B[l + j * ldb] : B[j + l * ldb]; };
+              for (int j = 0; j < n; ++j)
+                for (int i = 0; i < m; ++i)
+                  {
+                    double sum = 0.;
+                    for (int l = 0; l < k; ++l)
+                      sum += double(a(i, l)) * double(b(l, j));
+                    reference[i + j * ldc] =
+                      double(alpha) * sum + (beta == Real(0) ? 0. : double(beta) * C[i + j * ldc]);
+                  }
+              gemm(&ta, &tb, &m, &n, &k, &alpha, A.data(), &lda, B.data(), &ldb, &beta, C.data(),
+                   &ldc);
+              for (int j = 0; j < n; ++j)
+                for (int i = 0; i < m; ++i)
+                  {
+                    const double d = std::abs(C[i + j * ldc] - reference[i + j * ldc]);
+                    worst          = std::isnan(d) ? 1e300 : std::max(worst, d);
+                  }
+              forwarded += n <= 4;
+            }
+    testing::check_below(name + " with one to five columns, every transposition, beta 0 "
+                                "and not, trailing columns zero and not, against the sums, "
+                                "largest difference",
+                         worst, tolerance);
+    testing::log() << "the " << forwarded << " " << name << " products with one to four "
+                   << "columns went to gemv or to the library's product, those with five did "
+                   << "not: "
+                   << testing::yes(time::single_column_products_forwarded() - before == forwarded)
                    << std::endl;
   }
 
@@ -138,14 +183,16 @@ namespace
   /// x = A^{-1} (b - q) through condense(), S x_Γ = y - q, expand().
   void
   solve_with_interface_load(const time::CondensedFactorization &factor, const archdam::Vector &b,
-                            const std::vector<double> &q, archdam::Vector &x)
+                            const std::vector<double> &q, archdam::Vector &x,
+                            const dealii::Vector<double> *q2 = nullptr,
+                            archdam::Vector              *x2 = nullptr)
   {
     dealii::Vector<double> y;
-    factor.condense(b, y);
+    factor.condense(b, y, q2 != nullptr);
     for (unsigned int g = 0; g < q.size(); ++g)
       y[g] -= q[g];
     factor.solve_interface(y);
-    factor.expand(y, x);
+    factor.expand(y, x, q2, x2);
   }
 
   /// Random entries in [-1, 1] for b (of @p N unknowns, the same on every
@@ -303,13 +350,14 @@ namespace
                                 "difference relative to the solution's largest",
                          difference(x_single), 1e-10);
 
-    // A load on the interface alone (the position correction's solve).
+    // A load on the interface alone (the position correction's solve),
+    // beside the solve with b.
     std::uniform_real_distribution<double> uniform(-1., 1.);
     dealii::Vector<double>                 q2(gamma.size());
     for (auto &v : q2)
       v = uniform(random);
-    full.solve_interface_load(q2, x_full);
-    single.solve_interface_load(q2, x_single);
+    solve_with_interface_load(full, b, q, dx, &q2, &x_full);
+    solve_with_interface_load(single, b, q, dx, &q2, &x_single);
     const double interface_only = difference(x_single);
     testing::log() << name << ": a load on the interface alone, single against double, largest "
                    << "difference relative to the solution's largest, between 1e-9 and 1e-5: "
@@ -374,14 +422,20 @@ namespace
                          worst_inverse / largest, 1e-10);
 
     // Condensed solves with a load on the interface against A^{-1} (b - q),
-    // two in a row with different b and q (the second reuses the set-up of
-    // the first, and must not reuse its condensation).
+    // three in a row with different b and q (each reuses the set-up of the
+    // one before, and must not reuse its condensation): with one right-hand
+    // side; with the room for a load on the interface alone but none given;
+    // with that load q' too, whose response A^{-1} q' (the joints' position
+    // correction) comes from the same expansion.
     std::mt19937                           random(7);
     std::uniform_real_distribution<double> uniform(-1., 1.);
     archdam::Vector b(owned, MPI_COMM_WORLD), x(owned, MPI_COMM_WORLD),
       reference(owned, MPI_COMM_WORLD);
     std::vector<double> q(k);
-    for (unsigned int repeat = 0; repeat < 2; ++repeat)
+    const std::array<std::string, 3> solves{{"one right-hand side",
+                                             "room for an interface load, none given",
+                                             "an interface load beside"}};
+    for (unsigned int repeat = 0; repeat < solves.size(); ++repeat)
       {
         for (auto &v : q)
           v = uniform(random);
@@ -399,8 +453,26 @@ namespace
         b_minus_q.compress(VectorOperation::add);
         plain.solve(reference, b_minus_q);
 
+        // A load on the interface alone, q'.
+        dealii::Vector<double> q2(k);
+        for (auto &v : q2)
+          v = uniform(random);
+        archdam::Vector q2_full(owned, MPI_COMM_WORLD), x2(owned, MPI_COMM_WORLD),
+          reference2(owned, MPI_COMM_WORLD);
+
         const std::uint64_t forwarded_before = time::single_column_products_forwarded();
-        solve_with_interface_load(condensed, b, q, x);
+        if (repeat == 0)
+          solve_with_interface_load(condensed, b, q, x);
+        else
+          {
+            // the room without a load: the second column's x_Γ is zero
+            dealii::Vector<double> y;
+            condensed.condense(b, y, true);
+            for (unsigned int g = 0; g < k; ++g)
+              y[g] -= q[g];
+            condensed.solve_interface(y);
+            condensed.expand(y, x, repeat == 2 ? &q2 : nullptr, repeat == 2 ? &x2 : nullptr);
+          }
         if (repeat == 0)
           testing::log() << name << ": MUMPS's forward elimination and backward substitution "
                          << "made products with one column through dgemv: "
@@ -409,27 +481,21 @@ namespace
                               MPI_COMM_WORLD) == 1)
                          << std::endl;
         x -= reference;
-        testing::check_below(name + ": condense, interface solve, expand against A^-1 (b - q)," +
-                               (repeat == 0 ? " first" : " second") +
-                               " solve, largest difference relative to the solution's largest",
+        testing::check_below(name + ": condense, interface solve, expand against A^-1 (b - q), " +
+                               solves[repeat] +
+                               ", largest difference relative to the solution's largest",
                              x.linfty_norm() / reference.linfty_norm(), 1e-10);
-
-        // A load on the interface alone (the joints' position correction),
-        // after a condensed solve and before the next: A^{-1} q'.
-        dealii::Vector<double> q2(k);
-        for (auto &v : q2)
-          v = uniform(random);
-        archdam::Vector q2_full(owned, MPI_COMM_WORLD), x2(owned, MPI_COMM_WORLD),
-          reference2(owned, MPI_COMM_WORLD);
-        condensed.solve_interface_load(q2, x2);
+        if (repeat < 2)
+          continue;
         for (unsigned int g = 0; g < k; ++g)
           if (owned.is_element(gamma[g]))
             q2_full(gamma[g]) = q2[g];
         q2_full.compress(VectorOperation::insert);
         plain.solve(reference2, q2_full);
         x2 -= reference2;
-        testing::check_below(name + ": a load on the interface alone against A^-1 q, largest "
-                                    "difference relative to the solution's largest",
+        testing::check_below(name + ": a load on the interface alone, from the same expansion, "
+                                    "against A^-1 q', largest difference relative to the "
+                                    "solution's largest",
                              x2.linfty_norm() / reference2.linfty_norm(), 1e-10);
       }
 
@@ -456,7 +522,8 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  check_single_column_products();
+  check_narrow_products<double>("dgemm", 1e-12);
+  check_narrow_products<float>("sgemm", 1e-4);
   check("positive definite", false);
   check("indefinite", true);
   check_low_rank("positive definite", false);

@@ -457,7 +457,9 @@ namespace archdam::joints
       {
         // 1. forward elimination: the interface's response to r at zero
         //    pair forces, z = S^{-1} y; s = w_base + h B z.
-        condensed->condense(r, interface_x);
+        // (room for the position correction's load in a dynamic step)
+        condensed->condense(r, interface_x,
+                            p.corrects_positions() && !velocity_target.empty());
         condensed->solve_interface(interface_x);
         s.assign(m, 0.);
         for (unsigned int j = 0; j < m; ++j)
@@ -534,18 +536,18 @@ namespace archdam::joints
         dealii::Vector<double> f(pair_load.begin(), pair_load.end()), Gf(interface_x.size());
         G.vmult(Gf, f);
         interface_x -= Gf;
-        condensed->expand(interface_x, x);
-        if (!correction_force.empty())
+        if (correction_force.empty())
           {
-            // the position correction's load -B^T nu lies on the interface
-            correction_time += seconds_of([&] {
-              dealii::Vector<double> q(interface_x.size());
-              for (unsigned int j = 0; j < m; ++j)
-                for (const auto &[g, v] : B_interface[j])
-                  q[g] -= v * correction_force[j];
-              condensed->solve_interface_load(q, corrected_displacement);
-            });
+            condensed->expand(interface_x, x);
+            return step;
           }
+        // the position correction's load -B^T nu lies on the interface: its
+        // response comes from the same backward substitution
+        dealii::Vector<double> q(interface_x.size());
+        for (unsigned int j = 0; j < m; ++j)
+          for (const auto &[g, v] : B_interface[j])
+            q[g] -= v * correction_force[j];
+        condensed->expand(interface_x, x, &q, &corrected_displacement);
         return step;
       }
 

@@ -53,18 +53,18 @@ namespace archdam::time
   {
     typename MumpsInterface<Real>::Struc id{};
     MPI_Comm       comm = MPI_COMM_NULL;
-    /// Gathers a distributed vector on rank 0 and scatters it back.
+    /// Gathers a distributed vector on rank 0 and scatters it back (a
+    /// second vector on rank 0 for the second right-hand side's solution).
     VecScatter to_zero = nullptr;
-    Vec        on_zero = nullptr;
+    Vec        on_zero = nullptr, second_on_zero = nullptr;
     std::vector<MUMPS_INT> irn, jcn, schur_list, perm;
     std::vector<Real>      values, schur, rhs, reduced;
+    /// The right-hand sides of the last condensation: 1, or 2 with the
+    /// interface load's column.
+    MUMPS_INT columns = 1;
     /// The symmetric scaling D = diag(|a_ii|^(-1/2)) of every unknown (on
     /// every rank): MUMPS factorizes D A D, whose diagonal entries are ±1.
     std::vector<double> scaling;
-    /// A right-hand side on the interface alone, as MUMPS's sparse one.
-    std::vector<Real>      sparse_values;
-    std::vector<MUMPS_INT> sparse_rows, sparse_start{1, 1};
-
     MUMPS_INT &
     icntl(const unsigned int k)
     {
@@ -95,6 +95,8 @@ namespace archdam::time
         VecScatterDestroy(&to_zero);
       if (on_zero != nullptr)
         VecDestroy(&on_zero);
+      if (second_on_zero != nullptr)
+        VecDestroy(&second_on_zero);
     }
   };
 
@@ -322,7 +324,8 @@ namespace archdam::time
   }
 
   void
-  CondensedFactorization::condense(const archdam::Vector &b, dealii::Vector<double> &y) const
+  CondensedFactorization::condense(const archdam::Vector &b, dealii::Vector<double> &y,
+                                   const bool with_interface_load) const
   {
     std::visit(
       [&](auto &owner) {
@@ -333,16 +336,20 @@ namespace archdam::time
           petsc_check(VecScatterCreateToZero(vec, &m.to_zero, &m.on_zero));
         petsc_check(VecScatterBegin(m.to_zero, vec, m.on_zero, INSERT_VALUES, SCATTER_FORWARD));
         petsc_check(VecScatterEnd(m.to_zero, vec, m.on_zero, INSERT_VALUES, SCATTER_FORWARD));
+        // The interface load's column is zero: its forward elimination off
+        // the interface, eliminated last, is zero whatever the load on it.
+        m.columns = with_interface_load ? 2 : 1;
+        m.reduced.resize(m.columns * gamma.size());
         if (host)
           {
             const PetscScalar *a;
             petsc_check(VecGetArrayRead(m.on_zero, &a));
-            m.rhs.assign(a, a + b.size());
+            m.rhs.assign(m.columns * b.size(), 0.);
+            for (std::size_t i = 0; i < b.size(); ++i)
+              m.rhs[i] = a[i] * m.scaling[i];
             petsc_check(VecRestoreArrayRead(m.on_zero, &a));
-            for (std::size_t i = 0; i < m.rhs.size(); ++i)
-              m.rhs[i] *= m.scaling[i];
             m.id.rhs     = m.rhs.data();
-            m.id.nrhs    = 1;
+            m.id.nrhs    = m.columns;
             m.id.lrhs    = static_cast<MUMPS_INT>(b.size());
             m.id.redrhs  = m.reduced.data();
             m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
@@ -352,7 +359,7 @@ namespace archdam::time
         m.run(3, "condensation");
         elimination.stop();
         const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
-        y.reinit(reduced.size(), true);
+        y.reinit(gamma.size(), true);
         for (unsigned int i = 0; i < y.size(); ++i)
           y[i] = reduced[i] / gamma_scaling[i];
       },
@@ -360,81 +367,56 @@ namespace archdam::time
   }
 
   void
-  CondensedFactorization::solve_interface_load(const dealii::Vector<double> &q,
-                                               archdam::Vector              &x) const
+  CondensedFactorization::expand(const dealii::Vector<double> &x_gamma, archdam::Vector &x,
+                                 const dealii::Vector<double> *q, archdam::Vector *x_q) const
   {
     std::visit(
       [&](auto &owner) {
         auto &m = *owner;
         const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
-        AssertDimension(q.size(), gamma.size());
-        if (m.to_zero == nullptr)
-          petsc_check(VecScatterCreateToZero(static_cast<const Vec &>(x), &m.to_zero, &m.on_zero));
-        if (host)
+        const auto k    = gamma.size();
+        AssertThrow(q == nullptr || (m.columns == 2 && x_q != nullptr && q->size() == k),
+                    ExcMessage("An interface load's response needs the condensation's room "
+                               "for it."));
+        // the second column's x_Γ = S^{-1} q (zero without a load)
+        dealii::Vector<double> q_gamma(k);
+        if (q != nullptr)
           {
-            // b as MUMPS's sparse right-hand side (ICNTL(20) = 1): its forward
-            // elimination visits only the fronts that hold b's entries, here the
-            // interface's, eliminated last.
-            m.sparse_values.assign(q.begin(), q.end());
-            for (unsigned int g = 0; g < gamma.size(); ++g)
-              m.sparse_values[g] *= gamma_scaling[g];
-            m.sparse_rows.resize(gamma.size());
-            for (unsigned int g = 0; g < gamma.size(); ++g)
-              m.sparse_rows[g] = static_cast<MUMPS_INT>(gamma[g] + 1);
-            m.sparse_start[1]  = static_cast<MUMPS_INT>(gamma.size() + 1);
-            m.id.nz_rhs        = static_cast<MUMPS_INT>(gamma.size());
-            m.id.rhs_sparse    = m.sparse_values.data();
-            m.id.irhs_sparse   = m.sparse_rows.data();
-            m.id.irhs_ptr      = m.sparse_start.data();
-            m.rhs.assign(x.size(), 0.); // the solution's place
-            m.id.rhs     = m.rhs.data();
-            m.id.nrhs    = 1;
-            m.id.lrhs    = static_cast<MUMPS_INT>(x.size());
-            m.id.redrhs  = m.reduced.data();
-            m.id.lredrhs = static_cast<MUMPS_INT>(gamma.size());
+            q_gamma = *q;
+            solve_interface(q_gamma);
           }
-        m.icntl(20) = 1;
-        m.icntl(26) = 1;
-        elimination.start();
-        m.run(3, "condensation of an interface load");
-        elimination.stop();
-        dealii::Vector<double> x_gamma(gamma.size());
-        const auto reduced = Utilities::MPI::broadcast(m.comm, m.reduced, 0);
-        for (unsigned int g = 0; g < gamma.size(); ++g)
-          x_gamma[g] = reduced[g] / gamma_scaling[g];
-        solve_interface(x_gamma);
-        expand(x_gamma, x);
-        m.icntl(20) = 0;
-      },
-      mumps);
-  }
-
-  void
-  CondensedFactorization::expand(const dealii::Vector<double> &x_gamma,
-                                 archdam::Vector &x) const
-  {
-    std::visit(
-      [&](auto &owner) {
-        auto &m = *owner;
-        const bool host = Utilities::MPI::this_mpi_process(m.comm) == 0;
         if (host)
-          for (unsigned int g = 0; g < gamma.size(); ++g)
-            m.reduced[g] = x_gamma[g] / gamma_scaling[g];
+          for (unsigned int g = 0; g < k; ++g)
+            {
+              m.reduced[g] = x_gamma[g] / gamma_scaling[g];
+              if (m.columns == 2)
+                m.reduced[k + g] = q_gamma[g] / gamma_scaling[g];
+            }
         m.icntl(26) = 2; // expansion: backward substitution from x_Γ
         substitution.start();
         m.run(3, "expansion");
         substitution.stop();
-        if (host)
+        const auto solution_of = [&](const unsigned int column, Vec &on_zero, archdam::Vector &y) {
+          const std::size_t n = y.size();
+          if (host)
+            {
+              PetscScalar *a;
+              petsc_check(VecGetArray(on_zero, &a));
+              for (std::size_t i = 0; i < n; ++i)
+                a[i] = m.rhs[column * n + i] * m.scaling[i];
+              petsc_check(VecRestoreArray(on_zero, &a));
+            }
+          const Vec &vec = static_cast<const Vec &>(y);
+          petsc_check(VecScatterBegin(m.to_zero, on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
+          petsc_check(VecScatterEnd(m.to_zero, on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
+        };
+        solution_of(0, m.on_zero, x);
+        if (q != nullptr)
           {
-            PetscScalar *a;
-            petsc_check(VecGetArray(m.on_zero, &a));
-            for (std::size_t i = 0; i < m.rhs.size(); ++i)
-              a[i] = m.rhs[i] * m.scaling[i];
-            petsc_check(VecRestoreArray(m.on_zero, &a));
+            if (m.second_on_zero == nullptr)
+              petsc_check(VecDuplicate(m.on_zero, &m.second_on_zero));
+            solution_of(1, m.second_on_zero, *x_q);
           }
-        const Vec &vec = static_cast<const Vec &>(x);
-        petsc_check(VecScatterBegin(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
-        petsc_check(VecScatterEnd(m.to_zero, m.on_zero, vec, INSERT_VALUES, SCATTER_REVERSE));
       },
       mumps);
   }

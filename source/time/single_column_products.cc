@@ -2,9 +2,13 @@
 
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <vector>
 
 // The Fortran BLAS interface (hidden string lengths are not passed: the
 // character arguments are single letters, as every BLAS caller does).
@@ -71,16 +75,209 @@ namespace
     sgemv_(trans, m, n, alpha, a, lda, x, incx, beta, y, incy);
   }
 
-  /// c (m x n) = alpha op(A) op(B) + beta c; with n = 1 by gemv.
+  /// The widest product made by narrow_product().
+  constexpr int widest_narrow = 4;
+
+  /// 32 bytes of Real: one AVX2 register (two SSE2 registers otherwise).
+  template <typename Real>
+  using Lanes [[gnu::vector_size(32)]] = Real;
+
+  template <typename Real>
+  [[gnu::always_inline]] inline Lanes<Real>
+  load(const Real *p)
+  {
+    Lanes<Real> v;
+    std::memcpy(&v, p, sizeof(v));
+    return v;
+  }
+
+  /// c (m x N) = alpha op(A) op(B) + beta c for a few columns N, reading
+  /// A's entries from memory once: eight columns of A (op(A) = A) or one
+  /// (op(A) = A^T) serve every column of op(B) from the registers. op(B),
+  /// times alpha, is copied to contiguous columns first (@p x, k N).
+  template <typename Real, int N>
+  [[gnu::always_inline]] inline void
+  narrow_product(const bool ta, const bool tb, const int m, const int k, const Real alpha,
+                 const Real *a, const int lda, const Real *b, const int ldb, const Real beta,
+                 Real *c, const int ldc, Real *x)
+  {
+    constexpr int L = sizeof(Lanes<Real>) / sizeof(Real);
+    for (int r = 0; r < N; ++r)
+      {
+        Real *cr = c + std::size_t(r) * ldc;
+        if (beta == Real(0))
+          std::fill(cr, cr + m, Real(0));
+        else if (beta != Real(1))
+          for (int i = 0; i < m; ++i)
+            cr[i] *= beta;
+        for (int j = 0; j < k; ++j)
+          x[std::size_t(r) * k + j] =
+            alpha * (tb ? b[r + std::size_t(j) * ldb] : b[j + std::size_t(r) * ldb]);
+      }
+    if (!ta) // A is m x k: c(:, r) += A(:, j) x_r(j), eight columns of A at a time
+      {
+        constexpr int W = 8;
+        int           j = 0;
+        for (; j + W <= k; j += W)
+          {
+            const Real *aj = a + std::size_t(j) * lda;
+            // the x_r(j) of the eight columns in every lane (held apart from
+            // x: x and c could alias for the compiler)
+            Lanes<Real> s[N][W];
+            for (int r = 0; r < N; ++r)
+              for (int l = 0; l < W; ++l)
+                s[r][l] = Lanes<Real>{} + x[std::size_t(r) * k + j + l];
+            int i = 0;
+            for (; i + L <= m; i += L)
+              {
+                Lanes<Real> v[W];
+                for (int l = 0; l < W; ++l)
+                  v[l] = load(aj + std::size_t(l) * lda + i);
+                for (int r = 0; r < N; ++r)
+                  {
+                    Real       *cr  = c + std::size_t(r) * ldc + i;
+                    Lanes<Real> sum = load(cr);
+                    for (int l = 0; l < W; ++l)
+                      sum += v[l] * s[r][l];
+                    std::memcpy(cr, &sum, sizeof(sum));
+                  }
+              }
+            for (; i < m; ++i)
+              for (int r = 0; r < N; ++r)
+                {
+                  Real sum = 0;
+                  for (int l = 0; l < W; ++l)
+                    sum += aj[std::size_t(l) * lda + i] * x[std::size_t(r) * k + j + l];
+                  c[i + std::size_t(r) * ldc] += sum;
+                }
+          }
+        for (; j < k; ++j)
+          for (int r = 0; r < N; ++r)
+            {
+              const Real *aj = a + std::size_t(j) * lda;
+              const Real  s  = x[std::size_t(r) * k + j];
+              Real       *cr = c + std::size_t(r) * ldc;
+              for (int i = 0; i < m; ++i)
+                cr[i] += aj[i] * s;
+            }
+        return;
+      }
+    // A is k x m: c(i, r) += A(:, i) . x_r
+    for (int i = 0; i < m; ++i)
+      {
+        const Real *ai = a + std::size_t(i) * lda;
+        Lanes<Real> sum[N][2]{};
+        int         j = 0;
+        for (; j + 2 * L <= k; j += 2 * L)
+          {
+            const Lanes<Real> v0 = load(ai + j), v1 = load(ai + j + L);
+            for (int r = 0; r < N; ++r)
+              {
+                const Real *xr = x + std::size_t(r) * k + j;
+                sum[r][0] += v0 * load(xr);
+                sum[r][1] += v1 * load(xr + L);
+              }
+          }
+        for (int r = 0; r < N; ++r)
+          {
+            const Real       *xr    = x + std::size_t(r) * k;
+            const Lanes<Real> lanes = sum[r][0] + sum[r][1];
+            Real              total = 0;
+            for (int l = 0; l < L; ++l)
+              total += lanes[l];
+            for (int jj = j; jj < k; ++jj)
+              total += ai[jj] * xr[jj];
+            c[i + std::size_t(r) * ldc] += total;
+          }
+      }
+  }
+
+  template <typename Real>
+  [[gnu::always_inline]] inline void
+  narrow_product_n(const bool ta, const bool tb, const int m, const int n, const int k,
+                   const Real alpha, const Real *a, const int lda, const Real *b, const int ldb,
+                   const Real beta, Real *c, const int ldc)
+  {
+    thread_local std::vector<Real> x;
+    x.resize(std::size_t(n) * k);
+    if (n == 2)
+      narrow_product<Real, 2>(ta, tb, m, k, alpha, a, lda, b, ldb, beta, c, ldc, x.data());
+    else if (n == 3)
+      narrow_product<Real, 3>(ta, tb, m, k, alpha, a, lda, b, ldb, beta, c, ldc, x.data());
+    else
+      narrow_product<Real, 4>(ta, tb, m, k, alpha, a, lda, b, ldb, beta, c, ldc, x.data());
+  }
+
+  /// The kernel compiled for processors with AVX2 and FMA, and for any.
+  template <typename Real>
+  [[gnu::target("avx2,fma")]] void
+  narrow_product_avx2(const bool ta, const bool tb, const int m, const int n, const int k,
+                      const Real alpha, const Real *a, const int lda, const Real *b,
+                      const int ldb, const Real beta, Real *c, const int ldc)
+  {
+    narrow_product_n(ta, tb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+  }
+
+  template <typename Real>
+  void
+  narrow_product_any(const bool ta, const bool tb, const int m, const int n, const int k,
+                     const Real alpha, const Real *a, const int lda, const Real *b,
+                     const int ldb, const Real beta, Real *c, const int ldc)
+  {
+    narrow_product_n(ta, tb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+  }
+
+  template <typename Real>
+  void
+  narrow_product_of(const bool ta, const bool tb, const int m, const int n, const int k,
+                    const Real alpha, const Real *a, const int lda, const Real *b,
+                    const int ldb, const Real beta, Real *c, const int ldc)
+  {
+    static const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    (avx2 ? narrow_product_avx2<Real> : narrow_product_any<Real>)(ta, tb, m, n, k, alpha, a, lda,
+                                                                 b, ldb, beta, c, ldc);
+  }
+
+  /// c (m x n) = alpha op(A) op(B) + beta c; with n = 1 by gemv, with a few
+  /// columns by narrow_product().
   template <typename Real>
   void
   gemm(const char *name, const char *transa, const char *transb, const int *m, const int *n,
        const int *k, const Real *alpha, const Real *a, const int *lda, const Real *b,
        const int *ldb, const Real *beta, Real *c, const int *ldc)
   {
-    if (*n != 1 || *m <= 0 || *k <= 0 || !forwarding.load(std::memory_order_relaxed))
+    if (*n < 1 || *n > widest_narrow || *m <= 0 || *k <= 0 ||
+        !forwarding.load(std::memory_order_relaxed))
       {
         blas_gemm<Real>(name)(transa, transb, m, n, k, alpha, a, lda, b, ldb, beta, c, ldc);
+        return;
+      }
+    // op(B)'s trailing columns that are zero (a second right-hand side
+    // that is zero off the interface: in a forward elimination always, in a
+    // backward substitution in the steps that have no load for it) only
+    // scale C's: the product has the leading columns alone.
+    const bool tb         = transposed(transb);
+    const auto zero_entry = [&](const int j, const int r) {
+      return (tb ? b[r + std::size_t(j) * *ldb] : b[j + std::size_t(r) * *ldb]) == Real(0);
+    };
+    int width = *n;
+    while (width > 1)
+      {
+        int j = 0;
+        while (j < *k && zero_entry(j, width - 1))
+          ++j;
+        if (j < *k)
+          break;
+        Real *cr = c + std::size_t(width - 1) * *ldc;
+        for (int i = 0; i < *m; ++i)
+          cr[i] = *beta == Real(0) ? Real(0) : *beta * cr[i];
+        --width;
+      }
+    if (width > 1)
+      {
+        narrow_product_of(transposed(transa), tb, *m, width, *k, *alpha, a, *lda, b, *ldb, *beta,
+                          c, *ldc);
+        forwarded.fetch_add(1, std::memory_order_relaxed);
         return;
       }
     // op(B) is k x 1, a column of B (stride 1) or, transposed, a row of B

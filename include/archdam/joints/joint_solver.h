@@ -118,9 +118,9 @@ namespace archdam::joints
      * correction that solve() found to bring every closed pair back to
      * touching (doc/theory/joints.md §11), v and a kept. solve() solved it
      * too: with the factorization condensed on the pairs, its load lies on
-     * the interface and costs one backward substitution
-     * (CondensedFactorization::solve_interface_load). Nothing when the
-     * step needed none.
+     * the interface, and its response comes from the step's own backward
+     * substitution as a second column (CondensedFactorization::expand).
+     * Nothing when the step needed none.
      */
     void
     correct_position(time::NewmarkIntegrator &newmark, time::NewmarkState &s);

@@ -109,22 +109,22 @@ namespace archdam::time
     solve_interface(dealii::LAPACKFullMatrix<double> &V) const;
 
     /// y = b_Γ - A_ΓI A_II^{-1} b_I, on every rank. Must be followed by
-    /// expand() before the next condense().
+    /// expand() before the next condense(). With @p with_interface_load a
+    /// second right-hand side, zero, rides along, so that the expand() can
+    /// also give the response to a load on the interface known only then.
     void
-    condense(const Vector &b, dealii::Vector<double> &y) const;
+    condense(const Vector &b, dealii::Vector<double> &y, bool with_interface_load = false) const;
 
     /// The full solution x from the interface values x_Γ (the same on every
-    /// rank) and the right-hand side of the last condense().
+    /// rank) and the right-hand side of the last condense(). With @p q (the
+    /// condense() with the interface load's room), also x_q = A^{-1} b_q for
+    /// the b_q that is q on the interface and zero off it: S x_q,Γ = q, and
+    /// x_q's backward substitution is the same pass over the factor as x's
+    /// (two right-hand sides read the factor's entries once; the forward
+    /// elimination has nothing to eliminate off the interface).
     void
-    expand(const dealii::Vector<double> &x_gamma, Vector &x) const;
-
-    /// x = A^{-1} b for a b that is @p q on the interface and zero off it
-    /// (S x_Γ = q, then expand()): one backward substitution, since the
-    /// forward elimination has nothing to eliminate off the interface
-    /// (MUMPS's sparse right-hand side). Replaces the last condense(): an
-    /// expand() of that one must come first.
-    void
-    solve_interface_load(const dealii::Vector<double> &q, Vector &x) const;
+    expand(const dealii::Vector<double> &x_gamma, Vector &x,
+           const dealii::Vector<double> *q = nullptr, Vector *x_q = nullptr) const;
 
   private:
     template <typename Real>

@@ -25,10 +25,18 @@ namespace archdam::time
    * other product. The result is the same product, summed in another order
    * (round-off). sgemm_, which a single-precision factor's solves call
    * (Time integration/Factor precision), goes to sgemv_ the same way.
+   *
+   * Products with two to four columns (a step's solve with the joints'
+   * position correction beside it, CondensedFactorization::expand) would
+   * be packed too: they go to a product of the library's own that reads
+   * each entry of A once for all columns (AVX2 where the processor has it),
+   * and op(B)'s trailing columns that are zero only scale C's, so that a
+   * zero second right-hand side costs no second pass over the factor.
    */
 
-  /// How many dgemm and sgemm calls of this process went to gemv (for the tests and
-  /// the benchmarks: 0 means the forwarding is not in effect).
+  /// How many dgemm and sgemm calls of this process went to gemv or to the
+  /// library's own product (for the tests and the benchmarks: 0 means the
+  /// forwarding is not in effect).
   std::uint64_t
   single_column_products_forwarded();
 
