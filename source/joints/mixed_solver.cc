@@ -154,7 +154,12 @@ namespace archdam::joints
           state[own[a]] == PairState::separation ? 0. : x(dim * a + k);
     if (&system == &all_pairs)
       {
-        set_relative_displacement();
+        // w = s - h C f with h C f = A0 x from the update (PairSystem; the
+        // open pairs' x is round-off): the exact product, a pass over C,
+        // once the states have settled (active_set_iteration()).
+        const auto &hCf = system.base_times_solution();
+        for (unsigned int j = 0; j < m; ++j)
+          w[j] = s_of[j] - hCf(j);
         return;
       }
     // the system's own w = s_of - h C f on its pairs
@@ -229,16 +234,26 @@ namespace archdam::joints
         solve_with_fixed_states(system, s_of);
         const bool settled = settle(among);
         step.force_change  = relative_change(before);
-        step.gap_residual  = 0.;
-        step.worst_pair    = among.front();
-        for (const unsigned int i : among)
-          if (const double r = law_residual(i); r > step.gap_residual)
-            {
-              step.gap_residual = r;
-              step.worst_pair   = i;
-            }
-        if (settled && step.gap_residual <= p.gap_tolerance)
-          return step.converged = true;
+        const auto residual = [&] {
+          step.gap_residual = 0.;
+          step.worst_pair   = among.front();
+          for (const unsigned int i : among)
+            if (const double r = law_residual(i); r > step.gap_residual)
+              {
+                step.gap_residual = r;
+                step.worst_pair   = i;
+              }
+          return step.gap_residual;
+        };
+        if (settled && residual() <= p.gap_tolerance)
+          {
+            // all pairs: w from the update's A0 x so far, now from C itself
+            if (&system != &all_pairs)
+              return step.converged = true;
+            set_relative_displacement();
+            if (residual() <= p.gap_tolerance)
+              return step.converged = true;
+          }
         const auto states = states_now();
         if (states != previous && ++visits[states] == cycle_visits)
           return false;

@@ -17,6 +17,8 @@ namespace archdam::joints
   {
     base.reinit(0, 0);
     update_columns.clear();
+    last_b.reinit(0);
+    last_y.reinit(0);
   }
 
   std::size_t
@@ -25,7 +27,7 @@ namespace archdam::joints
     std::size_t bytes = sizeof(double) * base.m() * base.n();
     for (const auto &column : update_columns)
       bytes += sizeof(double) * column.size();
-    return bytes;
+    return bytes + sizeof(double) * (last_b.size() + last_y.size() + base_product.size());
   }
 
   PairSystem::Solve
@@ -50,6 +52,8 @@ namespace archdam::joints
         base.compute_lu_factorization();
         base_hc = hc;
         update_columns.assign(n_row, {});
+        last_b.reinit(0);
+        last_y.reinit(0);
         how = Solve::factorized;
       }
 
@@ -90,8 +94,31 @@ namespace archdam::joints
               update_columns[missing[c]](j) = Z(j, c);
           }
       }
-    x = b;
-    base.solve(x); // y
+    // y = A0^{-1} b, from the last y when b differs from the last b in a
+    // few rows that have their column of Z, else by the LU (a pass over
+    // all of it).
+    std::vector<unsigned int> differing;
+    bool                      follows = last_y.size() == n_row;
+    for (unsigned int a = 0; a < n_row && follows; ++a)
+      if (b(a) != last_b(a))
+        {
+          follows = update_columns[a].size() == n_row && 4 * differing.size() < n_row;
+          differing.push_back(a);
+        }
+    if (follows)
+      {
+        x = last_y;
+        for (const unsigned int a : differing)
+          x.add(b(a) - last_b(a), update_columns[a]);
+      }
+    else
+      {
+        x = b;
+        base.solve(x);
+      }
+    last_b       = b;
+    last_y       = x;
+    base_product = b; // A0 x = b - E_R t
     if (changed.empty())
       return how;
 
@@ -131,7 +158,10 @@ namespace archdam::joints
     T.compute_lu_factorization();
     T.solve(t);
     for (unsigned int c = 0; c < n_changed; ++c)
-      x.add(-t(c), update_columns[changed[c]]);
+      {
+        x.add(-t(c), update_columns[changed[c]]);
+        base_product(changed[c]) -= t(c);
+      }
     return how;
   }
 } // namespace archdam::joints

@@ -34,7 +34,15 @@ namespace archdam::joints
    *   t = dR y = A_R y - b_R
    * (A_R the new rows; A0_R Z = I and A0_R y = b_R). Every row of the law is
    * rows of h C plus entries on the pair's own unknowns, so T and t come
-   * from entries of Z, y and b alone.
+   * from entries of Z, y and b alone. Two consequences save the solve's
+   * passes over the dense LU (doc/theory/joints.md §6):
+   * - y follows the last solve's: where b differs from the last b only in
+   *   rows with a column of Z (within a step the stick rows' b stays the
+   *   same; the slipping pairs' rows change), y = y_last + sum_a (b_a -
+   *   b_last,a) A0^{-1} e_a;
+   * - A0 x = b - E_R t: h C times the solution, the flexibility's part of
+   *   the relative displacement, comes without a product with h C
+   *   (base_times_solution()).
    */
   class PairSystem
   {
@@ -68,6 +76,14 @@ namespace archdam::joints
           const std::function<SystemRow(unsigned int, unsigned int)> &row_of,
           dealii::Vector<double>                                     &x);
 
+    /// A0 x for the last solve's x (h C times it on the system's unknowns),
+    /// from the update's own vectors: b - E_R t.
+    const dealii::Vector<double> &
+    base_times_solution() const
+    {
+      return base_product;
+    }
+
     /// The next solve() factorizes anew.
     void
     forget();
@@ -86,5 +102,8 @@ namespace archdam::joints
     dealii::LAPACKFullMatrix<double>    base;
     double                              base_hc = 0.;
     std::vector<dealii::Vector<double>> update_columns;
+    /// The last solve's b and y = A0^{-1} b (empty after a factorization),
+    /// and A0 x.
+    dealii::Vector<double> last_b, last_y, base_product;
   };
 } // namespace archdam::joints
